@@ -1,0 +1,130 @@
+// odestep: the fixed-step driving loops.
+#ifndef ODESTEP_INTEGRATE_HPP
+#define ODESTEP_INTEGRATE_HPP
+
+#include <cstddef>
+#include <limits>
+
+#include "state.hpp"
+#include "status.hpp"
+
+namespace odestep {
+
+/// What a driving loop reports. On failure `t` is the time of the caller's state (the last good one)
+/// and `steps` the number of steps that completed.
+template <class T>
+struct integrate_result {
+    odestep::status status;
+    T t;
+    std::size_t steps;
+};
+
+namespace detail {
+
+template <class T>
+struct identity {
+    using type = T;
+};
+template <class T>
+using identity_t = typename identity<T>::type;  // keeps t0, t1, dt out of template argument deduction
+
+struct no_observer {
+    template <class T, class State>
+    constexpr void operator()(T, const State&) const noexcept {}
+};
+
+/// Checks the arguments of a fixed-step run over [t0, t1] and counts its steps: ceil((t1 - t0) / dt),
+/// except that a quotient within a few rounding errors of a whole number n gives n steps, not n plus a
+/// sliver of a few ULPs (0.3 / 0.1 is 2.9999999999999996 in double).
+template <class T>
+constexpr status plan_steps(T t0, T t1, T dt, std::size_t& steps) noexcept {
+    if (!is_finite(t0) || !is_finite(t1) || !is_finite(t1 - t0)) return status::invalid_time;
+    if (!is_finite(dt) || dt == T(0)) return status::invalid_step;
+    const T span = t1 - t0;
+    if (span == T(0)) {
+        steps = 0;
+        return status::ok;
+    }
+    const T ratio = span / dt;
+    if (ratio < T(0)) return status::wrong_direction;
+    constexpr std::size_t most = std::numeric_limits<std::size_t>::max() / 2;
+    if (!(ratio < static_cast<T>(most))) return status::too_many_steps;
+    const std::size_t whole = static_cast<std::size_t>(ratio);  // floor, as ratio > 0
+    const T fraction = ratio - static_cast<T>(whole);
+    const T tolerance = T(16) * std::numeric_limits<T>::epsilon() * ratio;
+    // Just above a whole number: that many steps. Otherwise one more, the last one shortened to end on t1
+    // (just below a whole number, that last step differs from dt by a few ULPs only).
+    steps = (whole > 0 && fraction <= tolerance) ? whole : whole + 1;
+    return status::ok;
+}
+
+}  // namespace detail
+
+/// Integrates y from t0 to exactly t1 with steps of dt (negative dt integrates backwards). The step
+/// times are t0 + i dt from an integer counter, never a running sum (in float, a running t += 1e-3 reaches
+/// 991.14 instead of 1000 after 10^6 steps); the last step is shortened to end on t1. The observer is
+/// called as observe(t, y) with the initial state and after every step.
+///
+/// Bad arguments return a status before anything is touched. A step that produces NaN or Inf is rolled
+/// back: y is the state at the returned time and the status says why the run stopped.
+template <class Stepper, class System, class State, class Observer>
+[[nodiscard]] constexpr integrate_result<value_type_t<State>> integrate(
+    Stepper&& stepper, System&& f, State& y, detail::identity_t<value_type_t<State>> t0,
+    detail::identity_t<value_type_t<State>> t1, detail::identity_t<value_type_t<State>> dt,
+    Observer&& observe) {
+    using T = value_type_t<State>;
+    std::size_t n = 0;
+    const status valid = detail::plan_steps(t0, t1, dt, n);
+    if (valid != status::ok) return {valid, t0, 0};
+    observe(t0, static_cast<const State&>(y));
+    T t = t0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const bool last = i + 1 == n;
+        const T next = last ? t1 : t0 + static_cast<T>(i + 1) * dt;
+        const status s = stepper.step(f, y, t, last ? t1 - t : dt);
+        if (s != status::ok) return {s, t, i};
+        observe(next, static_cast<const State&>(y));
+        t = next;
+    }
+    return {status::ok, t1, n};
+}
+
+/// integrate without an observer.
+template <class Stepper, class System, class State>
+[[nodiscard]] constexpr integrate_result<value_type_t<State>> integrate(
+    Stepper&& stepper, System&& f, State& y, detail::identity_t<value_type_t<State>> t0,
+    detail::identity_t<value_type_t<State>> t1, detail::identity_t<value_type_t<State>> dt) {
+    return integrate(stepper, f, y, t0, t1, dt, detail::no_observer{});
+}
+
+/// Takes exactly `steps` steps of dt from t0 (so it ends at t0 + steps * dt), observing as `integrate`.
+template <class Stepper, class System, class State, class Observer>
+[[nodiscard]] constexpr integrate_result<value_type_t<State>> integrate_n_steps(
+    Stepper&& stepper, System&& f, State& y, detail::identity_t<value_type_t<State>> t0,
+    detail::identity_t<value_type_t<State>> dt, std::size_t steps, Observer&& observe) {
+    using T = value_type_t<State>;
+    if (!detail::is_finite(t0)) return {status::invalid_time, t0, 0};
+    if (!detail::is_finite(dt) || dt == T(0)) return {status::invalid_step, t0, 0};
+    observe(t0, static_cast<const State&>(y));
+    T t = t0;
+    for (std::size_t i = 0; i < steps; ++i) {
+        const T next = t0 + static_cast<T>(i + 1) * dt;  // from the counter, as in integrate
+        const status s = stepper.step(f, y, t, dt);
+        if (s != status::ok) return {s, t, i};
+        observe(next, static_cast<const State&>(y));
+        t = next;
+    }
+    return {status::ok, t, steps};
+}
+
+/// integrate_n_steps without an observer.
+template <class Stepper, class System, class State>
+[[nodiscard]] constexpr integrate_result<value_type_t<State>> integrate_n_steps(
+    Stepper&& stepper, System&& f, State& y, detail::identity_t<value_type_t<State>> t0,
+    detail::identity_t<value_type_t<State>> dt, std::size_t steps) {
+    return integrate_n_steps(stepper, f, y, t0, dt, steps, detail::no_observer{});
+}
+
+}  // namespace odestep
+
+#endif
