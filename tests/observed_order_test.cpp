@@ -97,7 +97,11 @@ TEST_CASE("every method reaches its nominal order on y0' = y0 y1, y1' = -y2, y2'
             // DOP853's eighth-order error coefficients are so small that in double its error reaches
             // round-off (1e-14) while the ninth-order terms still dominate: local slopes 8.5 to 8.9 for
             // N = 80 to 640 at t_end = 100. Its asymptotic order shows in long double, N = 640 to 2560.
-            check_order<M, long double>({100.0, 640, 2});
+            if constexpr (std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits) {
+                check_order<M, long double>({100.0, 640, 2});
+            } else {
+                MESSAGE("DOP853's asymptotic order needs a long double wider than double; not on this target");
+            }
         } else {
             check_order<M, double>(plan_for(odestep::explicit_rk<M, state3<double>>::order));
         }

@@ -71,7 +71,7 @@ public:
 
     /// y <- y(t + dt). On `status::non_finite` y is left as it was.
     template <class System>
-    [[nodiscard]] constexpr status step(System&& f, State& y, T t, T dt) const {
+    [[nodiscard]] status step(System&& f, State& y, T t, T dt) const {
         std::array<State, S> k;  // not zeroed: every stage the step reads is written first
         run_stages<false>(f, y, t, dt, k, std::make_index_sequence<S>{});
         State next;
@@ -85,7 +85,7 @@ public:
     /// As above, and `error` = y_{n+1} - yhat_{n+1} from the first embedded weights (signed, per
     /// component; for the midpoint table this is the Euler-Richardson estimate h (k2 - k1)).
     template <class System>
-    [[nodiscard]] constexpr status step(System&& f, State& y, T t, T dt, State& error) const {
+    [[nodiscard]] status step(System&& f, State& y, T t, T dt, State& error) const {
         static_assert(E >= 1, "odestep: this table has no embedded weights, so no error estimate");
         std::array<State, S> k;  // not zeroed: every stage the step reads is written first
         run_stages<true>(f, y, t, dt, k, std::make_index_sequence<S>{});
@@ -104,7 +104,7 @@ public:
 
     /// As above with both estimates of a table with two embedded solutions (DOP853: 5th and 3rd order).
     template <class System>
-    [[nodiscard]] constexpr status step(System&& f, State& y, T t, T dt, State& error, State& error2) const {
+    [[nodiscard]] status step(System&& f, State& y, T t, T dt, State& error, State& error2) const {
         static_assert(E >= 2, "odestep: this table has fewer than two embedded weight vectors");
         std::array<State, S> k;  // not zeroed: every stage the step reads is written first
         run_stages<true>(f, y, t, dt, k, std::make_index_sequence<S>{});
@@ -168,14 +168,14 @@ private:
     }
 
     template <bool WithError, class System, std::size_t... I>
-    static constexpr void run_stages(System& f, const State& y, T t, T dt, std::array<State, S>& k,
+    static void run_stages(System& f, const State& y, T t, T dt, std::array<State, S>& k,
                                      std::index_sequence<I...>) {
         (stage<I, WithError>(f, y, t, dt, k), ...);
     }
 
     // k_I = f(t + c_I dt, y + dt sum_{j<I} a_Ij k_j), emitted only when the step reads k_I.
     template <std::size_t I, bool WithError, class System>
-    static constexpr void stage(System& f, const State& y, T t, T dt, std::array<State, S>& k) {
+    static void stage(System& f, const State& y, T t, T dt, std::array<State, S>& k) {
         constexpr bool needed = WithError ? error_stages[I] : plain_stages[I];
         if constexpr (needed) {
             if constexpr (first_nonzero<a_row<I>>() == S) {

@@ -68,7 +68,7 @@ constexpr status plan_steps(T t0, T t1, T dt, std::size_t& steps) noexcept {
 /// Bad arguments return a status before anything is touched. A step that produces NaN or Inf is rolled
 /// back: y is the state at the returned time and the status says why the run stopped.
 template <class Stepper, class System, class State, class Observer>
-[[nodiscard]] constexpr integrate_result<value_type_t<State>> integrate(
+[[nodiscard]] integrate_result<value_type_t<State>> integrate(
     Stepper&& stepper, System&& f, State& y, detail::identity_t<value_type_t<State>> t0,
     detail::identity_t<value_type_t<State>> t1, detail::identity_t<value_type_t<State>> dt,
     Observer&& observe) {
@@ -91,7 +91,7 @@ template <class Stepper, class System, class State, class Observer>
 
 /// integrate without an observer.
 template <class Stepper, class System, class State>
-[[nodiscard]] constexpr integrate_result<value_type_t<State>> integrate(
+[[nodiscard]] integrate_result<value_type_t<State>> integrate(
     Stepper&& stepper, System&& f, State& y, detail::identity_t<value_type_t<State>> t0,
     detail::identity_t<value_type_t<State>> t1, detail::identity_t<value_type_t<State>> dt) {
     return integrate(stepper, f, y, t0, t1, dt, detail::no_observer{});
@@ -99,7 +99,7 @@ template <class Stepper, class System, class State>
 
 /// Takes exactly `steps` steps of dt from t0 (so it ends at t0 + steps * dt), observing as `integrate`.
 template <class Stepper, class System, class State, class Observer>
-[[nodiscard]] constexpr integrate_result<value_type_t<State>> integrate_n_steps(
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(
     Stepper&& stepper, System&& f, State& y, detail::identity_t<value_type_t<State>> t0,
     detail::identity_t<value_type_t<State>> dt, std::size_t steps, Observer&& observe) {
     using T = value_type_t<State>;
@@ -119,7 +119,7 @@ template <class Stepper, class System, class State, class Observer>
 
 /// integrate_n_steps without an observer.
 template <class Stepper, class System, class State>
-[[nodiscard]] constexpr integrate_result<value_type_t<State>> integrate_n_steps(
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(
     Stepper&& stepper, System&& f, State& y, detail::identity_t<value_type_t<State>> t0,
     detail::identity_t<value_type_t<State>> dt, std::size_t steps) {
     return integrate_n_steps(stepper, f, y, t0, dt, steps, detail::no_observer{});

@@ -12,11 +12,18 @@ namespace odestep {
 template <class System, class State, class T = typename State::value_type>
 inline constexpr bool is_inplace_system_v = std::is_invocable_v<System&, T, const State&, State&>;
 
+namespace detail {
+template <class System, class State, class T, class = void>
+struct returns_state : std::false_type {};
+template <class System, class State, class T>
+struct returns_state<System, State, T,
+                     std::enable_if_t<std::is_convertible_v<std::invoke_result_t<System&, T, const State&>, State>>>
+    : std::true_type {};
+}  // namespace detail
+
 /// True when `dydt = f(t, y)` returns the derivative.
 template <class System, class State, class T = typename State::value_type>
-inline constexpr bool is_returning_system_v =
-    std::is_invocable_v<System&, T, const State&> &&
-    std::is_convertible_v<std::invoke_result_t<System&, T, const State&>, State>;
+inline constexpr bool is_returning_system_v = detail::returns_state<System, State, T>::value;
 
 /// A first-order system y' = f(t, y) in either accepted form.
 template <class System, class State>

@@ -1,0 +1,68 @@
+// No library call allocates: every stepper, float/double/long double, the loops, the bad-input and
+// non-finite paths, all under the replaced global allocator.
+#include <doctest/doctest.h>
+#include <odestep/odestep.hpp>
+
+#include <array>
+#include <cstdlib>
+#include <new>
+#include <limits>
+
+#include "alloc_counter.hpp"
+#include "methods.hpp"
+
+namespace {
+
+template <class T>
+using state3 = std::array<T, 3>;
+
+struct lorenz {
+    template <class T>
+    void operator()(T, const state3<T>& x, state3<T>& d) const noexcept {
+        d[0] = T(10) * (x[1] - x[0]);
+        d[1] = x[0] * (T(28) - x[2]) - x[1];
+        d[2] = x[0] * x[1] - T(8) / T(3) * x[2];
+    }
+};
+
+template <class T>
+std::size_t allocations_of_every_call() {
+    const std::size_t before = odestep_test::allocations();
+    std::size_t observed = 0;
+    odestep_test::for_each_method([&](auto method) {
+        using M = decltype(method);
+        using stepper_t = odestep::explicit_rk<M, state3<T>>;
+        stepper_t stepper;
+        state3<T> y{T(1), T(1), T(1)};
+        (void)odestep::integrate(stepper, lorenz{}, y, T(0), T(1), T(0.01), [&](T, const state3<T>&) { ++observed; });
+        (void)odestep::integrate_n_steps(stepper, lorenz{}, y, T(0), T(0.01), 10);
+        (void)odestep::integrate(stepper, lorenz{}, y, T(0), T(1), T(0));         // invalid_step
+        (void)odestep::integrate(stepper, lorenz{}, y, T(0), T(1), T(-0.1));      // wrong_direction
+        auto poison = [](T, const state3<T>&) { return state3<T>{std::numeric_limits<T>::quiet_NaN(), T(0), T(0)}; };
+        (void)odestep::integrate(stepper, poison, y, T(0), T(1), T(0.1));         // non_finite
+        if constexpr (stepper_t::error_estimate) {
+            state3<T> err{};
+            (void)stepper.step(lorenz{}, y, T(0), T(0.01), err);
+        }
+    });
+    CHECK(observed > 0);
+    return odestep_test::allocations() - before;
+}
+
+}  // namespace
+
+TEST_CASE("allocation: the counter sees an allocation when there is one") {
+    const std::size_t before = odestep_test::allocations();
+    void* volatile p = ::operator new(16);  // volatile: a new/delete pair may otherwise be elided
+    ::operator delete(p);
+    CHECK(odestep_test::allocations() == before + 1);
+    void* volatile m = std::malloc(16);
+    std::free(m);
+    CHECK(odestep_test::allocations() == before + 2);
+}
+
+TEST_CASE("allocation: no library call allocates, in float, double or long double") {
+    CHECK(allocations_of_every_call<float>() == 0);
+    CHECK(allocations_of_every_call<double>() == 0);
+    CHECK(allocations_of_every_call<long double>() == 0);
+}

@@ -1,0 +1,17 @@
+# Fails when the object file holds any symbol in a writable data section (.data, .bss and their
+# per-symbol variants): the library must keep no mutable static state. Run with -DOBJECT=... -DOBJDUMP=...
+execute_process(COMMAND ${OBJDUMP} -t -C ${OBJECT} OUTPUT_VARIABLE table RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "objdump failed on ${OBJECT}")
+endif()
+string(REPLACE "\n" ";" lines "${table}")
+set(found "")
+foreach(line IN LISTS lines)
+  if(line MATCHES "[ \t]\\.(data|bss|tbss|tdata)(\\.[^ \t]*)?[ \t]" AND NOT line MATCHES "[ \t]\\.(data|bss)[ \t]*$")
+    string(APPEND found "${line}\n")
+  endif()
+endforeach()
+if(found)
+  message(FATAL_ERROR "mutable static storage in ${OBJECT}:\n${found}")
+endif()
+message(STATUS "no symbol in .data/.bss of ${OBJECT}")
