@@ -15,7 +15,15 @@ void __libc_free(void*);
 }
 
 namespace {
-std::size_t count = 0;  // test infrastructure: single-threaded doctest run
+std::size_t count = 0;
+
+[[noreturn]] void out_of_memory() {
+#if defined(__cpp_exceptions)
+    throw std::bad_alloc();
+#else
+    std::abort();  // the -fno-exceptions test build
+#endif
+}  // test infrastructure: single-threaded doctest run
 }
 
 std::size_t odestep_test::allocations() noexcept { return count; }
@@ -39,7 +47,7 @@ void free(void* p) { __libc_free(p); }
 void* operator new(std::size_t size) {
     ++count;
     if (void* p = __libc_malloc(size ? size : 1)) return p;
-    throw std::bad_alloc();
+    out_of_memory();
 }
 void* operator new[](std::size_t size) { return operator new(size); }
 void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
@@ -50,7 +58,7 @@ void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept { ret
 void* operator new(std::size_t size, std::align_val_t align) {
     ++count;
     if (void* p = __libc_memalign(static_cast<std::size_t>(align), size ? size : 1)) return p;
-    throw std::bad_alloc();
+    out_of_memory();
 }
 void* operator new[](std::size_t size, std::align_val_t align) { return operator new(size, align); }
 void operator delete(void* p) noexcept { __libc_free(p); }

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs the Debian packages a task needs, only those that are missing. Usage:
+#   scripts/install-deps.sh examples   # compiler, CMake
+#   scripts/install-deps.sh test       # + clang, doctest, valgrind, Boost/GSL (benchmarks), Cortex-M toolchain, QEMU
+set -euo pipefail
+profile=${1:-test}
+packages=(g++ cmake make mawk)
+if [ "$profile" = test ]; then
+  packages+=(clang doctest-dev valgrind libboost-dev libgsl-dev binutils
+             gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi qemu-system-arm)
+fi
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "installing: ${missing[*]}"
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs what is missing, then runs every test: the host suite under g++ and clang++, C++17 and C++20,
+# and ASan+UBSan (each preset builds the tests, the examples and their checks), then the benchmark's quick
+# instruction-count check.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh test || { echo "test: could not install the dependencies"; exit 1; }
+
+passed=0 failed=0 failures=()
+run() {  # run NAME COMMAND...
+  local name=$1; shift
+  local start=$SECONDS
+  echo "===== $name"
+  if "$@"; then passed=$((passed + 1)); echo "===== $name: ok ($((SECONDS - start)) s)"
+  else failed=$((failed + 1)); failures+=("$name"); echo "===== $name: FAILED ($((SECONDS - start)) s)"; fi
+}
+host_preset() {
+  cmake --preset "$1" >/dev/null && cmake --build --preset "$1" -j"$(nproc)" && ctest --preset "$1"
+}
+
+for preset in host host-cxx20 host-clang host-clang-cxx20 host-sanitize; do
+  run "$preset" host_preset "$preset"
+done
+
+echo
+[ $failed -eq 0 ] || echo "failed: ${failures[*]}"
+echo "test: $passed passed, $failed failed"
+[ $failed -eq 0 ]
