@@ -49,6 +49,28 @@ std::size_t allocations_of_every_call() {
     return odestep_test::allocations() - before;
 }
 
+template <class T>
+std::size_t allocations_of_newtonian_calls() {
+    using vec = std::array<T, 2>;
+    auto spring = [](T, const vec& x) { return vec{-x[0], -x[1]}; };
+    const std::size_t before = odestep_test::allocations();
+    auto run = [&](auto stepper) {
+        vec x{T(1), T(0)};
+        vec v{T(0), T(1)};
+        (void)odestep::integrate(stepper, spring, x, v, T(0), T(1), T(0.01), [](T, const vec&, const vec&) {});
+        (void)odestep::integrate_n_steps(stepper, spring, x, v, T(0), T(0.01), 10);
+        (void)odestep::integrate(stepper, spring, x, v, T(0), T(1), T(-0.1));  // wrong_direction
+    };
+    run(odestep::newtonian_euler<vec>{});
+    run(odestep::newtonian_midpoint<vec>{});
+    run(odestep::newtonian_euler_richardson<vec>{});
+    run(odestep::half_step<vec>{});
+    run(odestep::leapfrog_position_form<vec>{});
+    run(odestep::beeman<vec>{});
+    run(odestep::predictor_corrector<vec>{});
+    return odestep_test::allocations() - before;
+}
+
 }  // namespace
 
 TEST_CASE("allocation: the counter sees an allocation when there is one") {
@@ -65,4 +87,10 @@ TEST_CASE("allocation: no library call allocates, in float, double or long doubl
     CHECK(allocations_of_every_call<float>() == 0);
     CHECK(allocations_of_every_call<double>() == 0);
     CHECK(allocations_of_every_call<long double>() == 0);
+}
+
+TEST_CASE("allocation: no Newtonian stepper allocates, in float, double or long double") {
+    CHECK(allocations_of_newtonian_calls<float>() == 0);
+    CHECK(allocations_of_newtonian_calls<double>() == 0);
+    CHECK(allocations_of_newtonian_calls<long double>() == 0);
 }

@@ -30,6 +30,21 @@ T run_everything() {
             if (stepper_t{}.step(oscillators{}, y, T(0), T(0.125), err) == odestep::status::ok) sum += err[0];
         }
     });
+    // and the Newtonian family, whose history lives in the stepper objects, never in statics
+    using vec = std::array<T, 2>;
+    auto spring = [](T, const vec& x) { return vec{-x[0], -x[1]}; };
+    auto add = [&](auto stepper) {
+        vec x{T(1), T(0)};
+        vec v{T(0), T(1)};
+        if (odestep::integrate(stepper, spring, x, v, T(0), T(1), T(0.125)).status == odestep::status::ok) sum += x[0];
+    };
+    add(odestep::newtonian_euler<vec>{});
+    add(odestep::newtonian_midpoint<vec>{});
+    add(odestep::newtonian_euler_richardson<vec>{});
+    add(odestep::half_step<vec>{});
+    add(odestep::leapfrog_position_form<vec>{});
+    add(odestep::beeman<vec>{});
+    add(odestep::predictor_corrector<vec>{});
     return sum;
 }
 }  // namespace

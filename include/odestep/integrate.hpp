@@ -29,8 +29,8 @@ template <class T>
 using identity_t = typename identity<T>::type;  // keeps t0, t1, dt out of template argument deduction
 
 struct no_observer {
-    template <class T, class State>
-    constexpr void operator()(T, const State&) const noexcept {}
+    template <class T, class... States>
+    constexpr void operator()(T, const States&...) const noexcept {}
 };
 
 /// Checks the arguments of a fixed-step run over [t0, t1] and counts its steps: ceil((t1 - t0) / dt),
@@ -60,69 +60,129 @@ constexpr status plan_steps(T t0, T t1, T dt, std::size_t& steps) noexcept {
 
 }  // namespace detail
 
-/// Integrates y from t0 to exactly t1 with steps of dt (negative dt integrates backwards). The step
-/// times are t0 + i dt from an integer counter, never a running sum (in float, a running t += 1e-3 reaches
-/// 991.14 instead of 1000 after 10^6 steps); the last step is shortened to end on t1. The observer is
-/// called as observe(t, y) with the initial state and after every step.
-///
-/// Bad arguments return a status before anything is touched. A step that produces NaN or Inf is rolled
-/// back: y is the state at the returned time and the status says why the run stopped.
-template <class Stepper, class System, class State, class Observer>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate(
-    Stepper&& stepper, System&& f, State& y, detail::identity_t<value_type_t<State>> t0,
-    detail::identity_t<value_type_t<State>> t1, detail::identity_t<value_type_t<State>> dt,
-    Observer&& observe) {
-    using T = value_type_t<State>;
+namespace detail {
+
+// The one fixed-step loop, for a first-order state (y) or a Newtonian pair (x, v): the stepper is called
+// as step(f, states..., t, h) and the observer as observe(t, states...).
+template <class T, class Stepper, class System, class Observer, class... States>
+integrate_result<T> drive(Stepper& stepper, System& f, Observer& observe, T t0, T t1, T dt, States&... ys) {
     std::size_t n = 0;
-    const status valid = detail::plan_steps(t0, t1, dt, n);
+    const status valid = plan_steps(t0, t1, dt, n);
     if (valid != status::ok) return {valid, t0, 0};
-    observe(t0, static_cast<const State&>(y));
+    observe(t0, static_cast<const States&>(ys)...);
     T t = t0;
     for (std::size_t i = 0; i < n; ++i) {
         const bool last = i + 1 == n;
+        // t_i = t0 + i dt from the counter, never a running sum (in float, a running t += 1e-3 reaches
+        // 991.14 instead of 1000 after 10^6 steps); the last step is shortened to end on t1.
         const T next = last ? t1 : t0 + static_cast<T>(i + 1) * dt;
-        const status s = stepper.step(f, y, t, last ? t1 - t : dt);
+        const status s = stepper.step(f, ys..., t, last ? t1 - t : dt);
         if (s != status::ok) return {s, t, i};
-        observe(next, static_cast<const State&>(y));
+        observe(next, static_cast<const States&>(ys)...);
         t = next;
     }
     return {status::ok, t1, n};
 }
 
-/// integrate without an observer.
-template <class Stepper, class System, class State>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate(
-    Stepper&& stepper, System&& f, State& y, detail::identity_t<value_type_t<State>> t0,
-    detail::identity_t<value_type_t<State>> t1, detail::identity_t<value_type_t<State>> dt) {
-    return integrate(stepper, f, y, t0, t1, dt, detail::no_observer{});
-}
-
-/// Takes exactly `steps` steps of dt from t0 (so it ends at t0 + steps * dt), observing as `integrate`.
-template <class Stepper, class System, class State, class Observer>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(
-    Stepper&& stepper, System&& f, State& y, detail::identity_t<value_type_t<State>> t0,
-    detail::identity_t<value_type_t<State>> dt, std::size_t steps, Observer&& observe) {
-    using T = value_type_t<State>;
-    if (!detail::is_finite(t0)) return {status::invalid_time, t0, 0};
-    if (!detail::is_finite(dt) || dt == T(0)) return {status::invalid_step, t0, 0};
-    observe(t0, static_cast<const State&>(y));
+template <class T, class Stepper, class System, class Observer, class... States>
+integrate_result<T> drive_n(Stepper& stepper, System& f, Observer& observe, T t0, T dt, std::size_t steps,
+                            States&... ys) {
+    if (!is_finite(t0)) return {status::invalid_time, t0, 0};
+    if (!is_finite(dt) || dt == T(0)) return {status::invalid_step, t0, 0};
+    observe(t0, static_cast<const States&>(ys)...);
     T t = t0;
     for (std::size_t i = 0; i < steps; ++i) {
-        const T next = t0 + static_cast<T>(i + 1) * dt;  // from the counter, as in integrate
-        const status s = stepper.step(f, y, t, dt);
+        const T next = t0 + static_cast<T>(i + 1) * dt;  // from the counter, as in drive
+        const status s = stepper.step(f, ys..., t, dt);
         if (s != status::ok) return {s, t, i};
-        observe(next, static_cast<const State&>(y));
+        observe(next, static_cast<const States&>(ys)...);
         t = next;
     }
     return {status::ok, t, steps};
 }
 
+template <class State>
+using time_t_of = identity_t<value_type_t<State>>;
+
+}  // namespace detail
+
+/// Integrates y' = f(t, y) from t0 to exactly t1 with steps of dt (negative dt integrates backwards). The
+/// step times are t0 + i dt from an integer counter; the last step is shortened to end on t1. The observer
+/// is called as observe(t, y) with the initial state and after every step.
+///
+/// Bad arguments return a status before anything is touched. A step that produces NaN or Inf is rolled
+/// back: y is the state at the returned time and the status says why the run stopped.
+template <class Stepper, class System, class State, class Observer>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate(Stepper&& stepper, System&& f, State& y,
+                                                              detail::time_t_of<State> t0,
+                                                              detail::time_t_of<State> t1,
+                                                              detail::time_t_of<State> dt, Observer&& observe) {
+    return detail::drive(stepper, f, observe, t0, t1, dt, y);
+}
+
+/// integrate without an observer.
+template <class Stepper, class System, class State>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate(Stepper&& stepper, System&& f, State& y,
+                                                              detail::time_t_of<State> t0,
+                                                              detail::time_t_of<State> t1,
+                                                              detail::time_t_of<State> dt) {
+    detail::no_observer none;
+    return detail::drive(stepper, f, none, t0, t1, dt, y);
+}
+
+/// Takes exactly `steps` steps of dt from t0 (so it ends at t0 + steps * dt), observing as `integrate`.
+template <class Stepper, class System, class State, class Observer>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(Stepper&& stepper, System&& f, State& y,
+                                                                      detail::time_t_of<State> t0,
+                                                                      detail::time_t_of<State> dt,
+                                                                      std::size_t steps, Observer&& observe) {
+    return detail::drive_n(stepper, f, observe, t0, dt, steps, y);
+}
+
 /// integrate_n_steps without an observer.
 template <class Stepper, class System, class State>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(
-    Stepper&& stepper, System&& f, State& y, detail::identity_t<value_type_t<State>> t0,
-    detail::identity_t<value_type_t<State>> dt, std::size_t steps) {
-    return integrate_n_steps(stepper, f, y, t0, dt, steps, detail::no_observer{});
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(Stepper&& stepper, System&& f, State& y,
+                                                                      detail::time_t_of<State> t0,
+                                                                      detail::time_t_of<State> dt,
+                                                                      std::size_t steps) {
+    detail::no_observer none;
+    return detail::drive_n(stepper, f, none, t0, dt, steps, y);
+}
+
+/// Newton's equations x'' = a: the same loops for steppers that take position and velocity separately.
+/// The observer is called as observe(t, x, v).
+template <class Stepper, class Accel, class State, class Observer>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate(Stepper&& stepper, Accel&& a, State& x, State& v,
+                                                              detail::time_t_of<State> t0,
+                                                              detail::time_t_of<State> t1,
+                                                              detail::time_t_of<State> dt, Observer&& observe) {
+    return detail::drive(stepper, a, observe, t0, t1, dt, x, v);
+}
+
+template <class Stepper, class Accel, class State>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate(Stepper&& stepper, Accel&& a, State& x, State& v,
+                                                              detail::time_t_of<State> t0,
+                                                              detail::time_t_of<State> t1,
+                                                              detail::time_t_of<State> dt) {
+    detail::no_observer none;
+    return detail::drive(stepper, a, none, t0, t1, dt, x, v);
+}
+
+template <class Stepper, class Accel, class State, class Observer>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(Stepper&& stepper, Accel&& a, State& x,
+                                                                      State& v, detail::time_t_of<State> t0,
+                                                                      detail::time_t_of<State> dt,
+                                                                      std::size_t steps, Observer&& observe) {
+    return detail::drive_n(stepper, a, observe, t0, dt, steps, x, v);
+}
+
+template <class Stepper, class Accel, class State>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(Stepper&& stepper, Accel&& a, State& x,
+                                                                      State& v, detail::time_t_of<State> t0,
+                                                                      detail::time_t_of<State> dt,
+                                                                      std::size_t steps) {
+    detail::no_observer none;
+    return detail::drive_n(stepper, a, none, t0, dt, steps, x, v);
 }
 
 }  // namespace odestep

@@ -9,5 +9,6 @@
 #include "tableaux.hpp"
 #include "explicit_rk.hpp"
 #include "integrate.hpp"
+#include "newtonian.hpp"
 
 #endif

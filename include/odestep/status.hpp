@@ -13,6 +13,9 @@ enum class [[nodiscard]] status : unsigned char {
     wrong_direction,  ///< dt points away from t1; nothing was touched
     too_many_steps,   ///< (t1 - t0) / dt does not fit the step counter (std::size_t); nothing was touched
     non_finite,       ///< a step produced NaN or Inf (from the right-hand side or by overflow); it was rolled back
+    no_convergence,   ///< an iterated corrector did not meet its tolerance within its iteration cap; rolled back
+    step_mismatch,    ///< a multistep method was asked for a dt other than its history's; nothing was touched
+    invalid_tolerance,  ///< a tolerance is zero, negative or NaN; nothing was touched
 };
 
 /// A short English name for logs and test output; constant storage, no allocation.
@@ -24,6 +27,9 @@ constexpr const char* to_string(status s) noexcept {
         case status::wrong_direction: return "wrong_direction";
         case status::too_many_steps: return "too_many_steps";
         case status::non_finite: return "non_finite";
+        case status::no_convergence: return "no_convergence";
+        case status::step_mismatch: return "step_mismatch";
+        case status::invalid_tolerance: return "invalid_tolerance";
     }
     return "unknown";
 }

@@ -1,0 +1,464 @@
+// odestep: Newton's equations x'' = a(t, x, v) with position and velocity as two states, and the
+// textbook methods for them that are not symplectic compositions (those are in symplectic.hpp).
+#ifndef ODESTEP_NEWTONIAN_HPP
+#define ODESTEP_NEWTONIAN_HPP
+
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <utility>
+
+#include "tableau.hpp"  // detail::abs_value
+
+#include "state.hpp"
+#include "status.hpp"
+
+namespace odestep {
+
+namespace detail {
+template <class Accel, class State, class T, class = void>
+struct position_force : std::false_type {};
+template <class Accel, class State, class T>
+struct position_force<Accel, State, T,
+                      std::enable_if_t<std::is_convertible_v<std::invoke_result_t<Accel&, T, const State&>, State>>>
+    : std::true_type {};
+template <class Accel, class State, class T, class = void>
+struct velocity_force : std::false_type {};
+template <class Accel, class State, class T>
+struct velocity_force<
+    Accel, State, T,
+    std::enable_if_t<std::is_convertible_v<std::invoke_result_t<Accel&, T, const State&, const State&>, State>>>
+    : std::true_type {};
+}  // namespace detail
+
+/// True when the acceleration is written `State a(T t, const State& x)`: a force of position alone, the
+/// case in which splitting methods are symplectic.
+template <class Accel, class State, class T = value_type_t<State>>
+inline constexpr bool is_position_force_v = detail::position_force<Accel, State, T>::value;
+
+/// True when the acceleration is written `State a(T t, const State& x, const State& v)`.
+template <class Accel, class State, class T = value_type_t<State>>
+inline constexpr bool is_velocity_force_v = detail::velocity_force<Accel, State, T>::value;
+
+/// A Newtonian system x'' = a(...) in either accepted form.
+template <class Accel, class State>
+inline constexpr bool is_newtonian_system_v = is_position_force_v<Accel, State> || is_velocity_force_v<Accel, State>;
+
+namespace detail {
+
+// a(t, x, v), whichever form the user wrote (a position-only force ignores v).
+template <class Accel, class State, class T>
+constexpr State acceleration(Accel& a, T t, const State& x, const State& v) {
+    if constexpr (is_velocity_force_v<Accel, State, T>) {
+        return a(t, x, v);
+    } else if constexpr (is_position_force_v<Accel, State, T>) {
+        (void)v;
+        return a(t, x);
+    } else {
+        static_assert(is_newtonian_system_v<Accel, State>,
+                      "odestep: the acceleration must be callable as `State a(T t, const State& x, const State& v)` "
+                      "or `State a(T t, const State& x)`, with State = std::array<T, N>");
+        return x;
+    }
+}
+
+// a(t, x) for the methods that need a force of position alone (the symplectic ones).
+template <class Accel, class State, class T>
+constexpr State acceleration(Accel& a, T t, const State& x) {
+    static_assert(is_position_force_v<Accel, State, T>,
+                  "odestep: this method needs a force of position alone, written `State a(T t, const State& x)` "
+                  "(with a velocity-dependent force it is neither symplectic nor of its stated order)");
+    return a(t, x);
+}
+
+// x + c v over the components (c a scalar), the drift every Newtonian method is made of.
+template <class State, class T>
+constexpr State plus_scaled(const State& x, T c, const State& v) noexcept {
+    State out;
+    ODESTEP_UNROLL
+    for (std::size_t n = 0; n < out.size(); ++n) out[n] = x[n] + c * v[n];
+    return out;
+}
+
+// Where a history-keeping stepper expects its next step: the time (within a few ULPs: integrate computes
+// t from its counter, the stepper as t + dt), the same dt, and the same position object. Anything else
+// means someone else's state or a new grid, and the stepper starts afresh instead of continuing.
+template <class State, class T = value_type_t<State>>
+struct continuation {
+    T t = T(0);
+    T dt = T(0);
+    const State* x = nullptr;
+
+    constexpr bool matches(T t_now, T dt_now, const State& x_now) const noexcept {
+        const T slack = T(4) * std::numeric_limits<T>::epsilon() * (abs_value(t_now) + abs_value(dt_now));
+        return x == &x_now && dt == dt_now && abs_value(t_now - t) <= slack;
+    }
+    constexpr void expect(T t_next, T dt_now, const State& x_now) noexcept {
+        t = t_next;
+        dt = dt_now;
+        x = &x_now;
+    }
+    constexpr void clear() noexcept { x = nullptr; }
+};
+
+}  // namespace detail
+
+/// Euler for Newton's equations: x_{n+1} = x_n + v_n dt, v_{n+1} = v_n + a(t_n, x_n, v_n) dt.
+/// Order 1; on the oscillator its energy grows by exactly (1 + dt^2) per step.
+template <class State>
+class newtonian_euler {
+public:
+    using state_type = State;
+    using value_type = value_type_t<State>;
+    static constexpr int order = 1;
+    static constexpr std::size_t rhs_evals_per_step = 1;
+    static constexpr bool symplectic = false;
+    static constexpr bool time_reversible = false;
+    static constexpr bool self_starting = true;
+    static constexpr bool error_estimate = false;
+
+    template <class Accel>
+    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) const {
+        const State acc = detail::acceleration(a, t, x, v);
+        const State x1 = detail::plus_scaled(x, dt, v);    // x_{n+1} = x_n + v_n dt
+        const State v1 = detail::plus_scaled(v, dt, acc);  // v_{n+1} = v_n + a_n dt
+        if (!detail::all_finite(x1) || !detail::all_finite(v1)) return status::non_finite;
+        x = x1;
+        v = v1;
+        return status::ok;
+    }
+};
+
+/// The midpoint algorithm: v_{n+1} = v_n + a_n dt, x_{n+1} = x_n + (v_n + v_{n+1}) dt / 2
+/// (so x_{n+1} = x_n + v_n dt + a_n dt^2 / 2). Globally first order, like Euler, in v.
+template <class State>
+class newtonian_midpoint {
+public:
+    using state_type = State;
+    using value_type = value_type_t<State>;
+    static constexpr int order = 1;
+    static constexpr std::size_t rhs_evals_per_step = 1;
+    static constexpr bool symplectic = false;
+    static constexpr bool time_reversible = false;
+    static constexpr bool self_starting = true;
+    static constexpr bool error_estimate = false;
+
+    template <class Accel>
+    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) const {
+        using T = value_type;
+        const State acc = detail::acceleration(a, t, x, v);
+        State x1;
+        State v1;
+        const T half = dt / T(2);
+        ODESTEP_UNROLL
+        for (std::size_t n = 0; n < x1.size(); ++n) {
+            v1[n] = v[n] + acc[n] * dt;
+            x1[n] = x[n] + (v[n] + v1[n]) * half;
+        }
+        if (!detail::all_finite(x1) || !detail::all_finite(v1)) return status::non_finite;
+        x = x1;
+        v = v1;
+        return status::ok;
+    }
+};
+
+/// Euler-Richardson for Newton's equations (the explicit midpoint method on (x, v)):
+///   a_n = a(t, x, v), v_mid = v + a_n dt/2, x_mid = x + v dt/2, a_mid = a(t + dt/2, x_mid, v_mid),
+///   v_{n+1} = v + a_mid dt, x_{n+1} = x + v_mid dt.
+/// Its error estimate is the difference to the Euler step of the same start: x: a_n dt^2 / 2,
+/// v: (a_mid - a_n) dt.
+template <class State>
+class newtonian_euler_richardson {
+public:
+    using state_type = State;
+    using value_type = value_type_t<State>;
+    static constexpr int order = 2;
+    static constexpr int embedded_order = 1;
+    static constexpr std::size_t rhs_evals_per_step = 2;
+    static constexpr std::size_t rhs_evals_per_error_step = 2;
+    static constexpr bool symplectic = false;
+    static constexpr bool time_reversible = false;
+    static constexpr bool self_starting = true;
+    static constexpr bool error_estimate = true;
+
+    template <class Accel>
+    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) const {
+        State ex;
+        State ev;
+        return advance(a, x, v, t, dt, ex, ev);
+    }
+
+    /// As above, and (error_x, error_v) = the (x, v) step minus the Euler step from the same start.
+    template <class Accel>
+    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt, State& error_x,
+                              State& error_v) const {
+        return advance(a, x, v, t, dt, error_x, error_v);
+    }
+
+private:
+    template <class Accel>
+    static status advance(Accel& a, State& x, State& v, value_type t, value_type dt, State& error_x,
+                          State& error_v) {
+        using T = value_type;
+        const T half = dt / T(2);
+        const State a0 = detail::acceleration(a, t, x, v);
+        const State v_mid = detail::plus_scaled(v, half, a0);
+        const State x_mid = detail::plus_scaled(x, half, v);
+        const State a_mid = detail::acceleration(a, t + half, x_mid, v_mid);
+        State x1;
+        State v1;
+        State ex;
+        State ev;
+        ODESTEP_UNROLL
+        for (std::size_t n = 0; n < x1.size(); ++n) {
+            x1[n] = x[n] + v_mid[n] * dt;
+            v1[n] = v[n] + a_mid[n] * dt;
+            ex[n] = a0[n] * (half * dt);
+            ev[n] = (a_mid[n] - a0[n]) * dt;
+        }
+        if (!detail::all_finite(x1) || !detail::all_finite(v1) || !detail::all_finite(ev)) return status::non_finite;
+        x = x1;
+        v = v1;
+        error_x = ex;
+        error_v = ev;
+        return status::ok;
+    }
+};
+
+/// The half-step (staggered leapfrog) algorithm for a force of position alone:
+///   v_{n+1/2} = v_{n-1/2} + a_n dt,  x_{n+1} = x_n + v_{n+1/2} dt,  self-started with v_{1/2} = v_0 + a_0 dt/2.
+/// The staggered velocity lives in the stepper; the caller's v is kept at integer times,
+/// v_{n+1} = v_{n+1/2} + a_{n+1} dt/2, with a_{n+1} evaluated once and reused as the next step's a_n, so a
+/// step costs one evaluation (two on the first step). A step that does not continue the last one (another
+/// t, dt or position object) self-starts again; after changing x or v in place, call reset().
+template <class State>
+class half_step {
+public:
+    using state_type = State;
+    using value_type = value_type_t<State>;
+    static constexpr int order = 2;
+    static constexpr std::size_t rhs_evals_per_step = 2;  // the first step; later steps make one
+    static constexpr bool symplectic = true;
+    static constexpr bool time_reversible = true;
+    static constexpr bool self_starting = true;
+    static constexpr bool error_estimate = false;
+
+    constexpr void reset() noexcept { next_.clear(); }
+
+    template <class Accel>
+    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
+        using T = value_type;
+        const T half = dt / T(2);
+        State v_half;
+        if (next_.matches(t, dt, x)) {
+            v_half = detail::plus_scaled(v_half_, dt, a_next_);  // v_{n+1/2} = v_{n-1/2} + a_n dt
+        } else {
+            v_half = detail::plus_scaled(v, half, detail::acceleration(a, t, x));  // v_{1/2} = v_0 + a_0 dt/2
+        }
+        const State x1 = detail::plus_scaled(x, dt, v_half);  // x_{n+1} = x_n + v_{n+1/2} dt
+        const State a1 = detail::acceleration(a, t + dt, x1);
+        const State v1 = detail::plus_scaled(v_half, half, a1);  // v_{n+1} = v_{n+1/2} + a_{n+1} dt/2
+        if (!detail::all_finite(x1) || !detail::all_finite(v1) || !detail::all_finite(a1)) return status::non_finite;
+        x = x1;
+        v = v1;
+        v_half_ = v_half;
+        a_next_ = a1;
+        next_.expect(t + dt, dt, x);
+        return status::ok;
+    }
+
+private:
+    State v_half_{};
+    State a_next_{};
+    detail::continuation<State> next_{};
+};
+
+/// The original (position) form of the leapfrog, Stormer's method, for a force of position alone:
+///   x_{n+1} = 2 x_n - x_{n-1} + a_n dt^2,   v_n = (x_{n+1} - x_{n-1}) / (2 dt),
+/// self-started with x_1 = x_0 + v_0 dt + a_0 dt^2 / 2. To give v at the new time, each step also forms
+/// x_{n+2} from a_{n+1}, which it keeps as the next step's a_n: one evaluation per step (two on the first).
+template <class State>
+class leapfrog_position_form {
+public:
+    using state_type = State;
+    using value_type = value_type_t<State>;
+    static constexpr int order = 2;
+    static constexpr std::size_t rhs_evals_per_step = 2;  // the first step; later steps make one
+    static constexpr bool symplectic = true;
+    static constexpr bool time_reversible = true;
+    static constexpr bool self_starting = true;
+    static constexpr bool error_estimate = false;
+
+    constexpr void reset() noexcept { next_.clear(); }
+
+    template <class Accel>
+    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
+        using T = value_type;
+        const T dt2 = dt * dt;
+        State x1;
+        if (next_.matches(t, dt, x)) {
+            ODESTEP_UNROLL
+            for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = T(2) * x[n] - x_prev_[n] + a_next_[n] * dt2;
+        } else {
+            const State a0 = detail::acceleration(a, t, x);
+            ODESTEP_UNROLL
+            for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + a0[n] * (dt2 / T(2));
+        }
+        const State a1 = detail::acceleration(a, t + dt, x1);
+        State v1;
+        const T two_dt = T(2) * dt;
+        ODESTEP_UNROLL
+        for (std::size_t n = 0; n < v1.size(); ++n) {
+            const T x2 = T(2) * x1[n] - x[n] + a1[n] * dt2;  // x_{n+2}
+            v1[n] = (x2 - x[n]) / two_dt;                      // v_{n+1} = (x_{n+2} - x_n) / (2 dt)
+        }
+        if (!detail::all_finite(x1) || !detail::all_finite(v1)) return status::non_finite;
+        x_prev_ = x;
+        x = x1;
+        v = v1;
+        a_next_ = a1;
+        next_.expect(t + dt, dt, x);
+        return status::ok;
+    }
+
+private:
+    State x_prev_{};
+    State a_next_{};
+    detail::continuation<State> next_{};
+};
+
+/// Beeman's algorithm for a force of position alone:
+///   x_{n+1} = x_n + v_n dt + (4 a_n - a_{n-1}) dt^2 / 6,
+///   v_{n+1} = v_n + (2 a_{n+1} + 5 a_n - a_{n-1}) dt / 6,
+/// self-started by one velocity Verlet step (x_1 = x_0 + v_0 dt + a_0 dt^2/2, v_1 = v_0 + (a_0 + a_1) dt/2).
+/// a_{n+1} is kept for the next step: one evaluation per step (two on the first).
+template <class State>
+class beeman {
+public:
+    using state_type = State;
+    using value_type = value_type_t<State>;
+    static constexpr int order = 2;
+    static constexpr std::size_t rhs_evals_per_step = 2;  // the first step; later steps make one
+    static constexpr bool symplectic = false;
+    static constexpr bool time_reversible = false;
+    static constexpr bool self_starting = true;
+    static constexpr bool error_estimate = false;
+
+    constexpr void reset() noexcept { next_.clear(); }
+
+    template <class Accel>
+    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
+        using T = value_type;
+        const bool continuing = next_.matches(t, dt, x);
+        const State a0 = continuing ? a_now_ : detail::acceleration(a, t, x);
+        const State& a_before = continuing ? a_prev_ : a0;
+        const T dt2_6 = dt * dt / T(6);
+        const T dt_6 = dt / T(6);
+        State x1;
+        ODESTEP_UNROLL
+        for (std::size_t n = 0; n < x1.size(); ++n) {
+            x1[n] = continuing ? x[n] + v[n] * dt + (T(4) * a0[n] - a_before[n]) * dt2_6
+                               : x[n] + v[n] * dt + a0[n] * (dt * dt / T(2));
+        }
+        const State a1 = detail::acceleration(a, t + dt, x1);
+        State v1;
+        ODESTEP_UNROLL
+        for (std::size_t n = 0; n < v1.size(); ++n) {
+            v1[n] = continuing ? v[n] + (T(2) * a1[n] + T(5) * a0[n] - a_before[n]) * dt_6
+                               : v[n] + (a0[n] + a1[n]) * (dt / T(2));
+        }
+        if (!detail::all_finite(x1) || !detail::all_finite(v1) || !detail::all_finite(a1)) return status::non_finite;
+        x = x1;
+        v = v1;
+        a_prev_ = a0;
+        a_now_ = a1;
+        next_.expect(t + dt, dt, x);
+        return status::ok;
+    }
+
+private:
+    State a_prev_{};
+    State a_now_{};
+    detail::continuation<State> next_{};
+};
+
+/// The predictor-corrector of the course material: predict x_p = x_{n-1} + 2 v_n dt, then correct
+///   v_{n+1} = v_n + (a_p + a_n) dt / 2,   x_{n+1} = x_n + (v_{n+1} + v_n) dt / 2,
+/// with a_p = a(t_{n+1}, x_p, v_p), repeating the correction (x_p, v_p <- x_{n+1}, v_{n+1}) until the change
+/// in every component is within `tolerance` relative to the state (default 16 ULPs), at most `max_iterations`
+/// times; past the cap, status::no_convergence and the step is rolled back. Self-started with the Taylor
+/// prediction x_p = x_0 + v_0 dt + a_0 dt^2 / 2. Accepts velocity-dependent forces (v_p starts as
+/// v_n + a_n dt).
+template <class State>
+class predictor_corrector {
+public:
+    using state_type = State;
+    using value_type = value_type_t<State>;
+    static constexpr int order = 2;
+    static constexpr int max_iterations = 16;
+    static constexpr std::size_t rhs_evals_per_step = 1 + max_iterations;
+    static constexpr bool symplectic = false;
+    static constexpr bool time_reversible = false;
+    static constexpr bool self_starting = true;
+    static constexpr bool error_estimate = false;
+
+    /// Relative tolerance of the corrector iteration, in units of the state's magnitude.
+    value_type tolerance = value_type(16) * std::numeric_limits<value_type>::epsilon();
+
+    constexpr void reset() noexcept { next_.clear(); }
+
+    /// Corrector iterations the last successful step needed.
+    constexpr int last_iterations() const noexcept { return iterations_; }
+
+    template <class Accel>
+    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
+        using T = value_type;
+        if (!(tolerance > T(0)) || !detail::is_finite(tolerance)) return status::invalid_tolerance;
+        const State a0 = detail::acceleration(a, t, x, v);
+        State xp;
+        if (next_.matches(t, dt, x)) {
+            xp = detail::plus_scaled(x_prev_, T(2) * dt, v);  // x_p = x_{n-1} + 2 v_n dt
+        } else {
+            ODESTEP_UNROLL
+            for (std::size_t n = 0; n < xp.size(); ++n) xp[n] = x[n] + v[n] * dt + a0[n] * (dt * dt / T(2));
+        }
+        State vp = detail::plus_scaled(v, dt, a0);
+        const T half = dt / T(2);
+        for (int k = 1; k <= max_iterations; ++k) {
+            const State ap = detail::acceleration(a, t + dt, xp, vp);
+            State x1;
+            State v1;
+            T change = T(0);
+            T size = T(0);
+            ODESTEP_UNROLL
+            for (std::size_t n = 0; n < x1.size(); ++n) {
+                v1[n] = v[n] + (ap[n] + a0[n]) * half;
+                x1[n] = x[n] + (v1[n] + v[n]) * half;
+                change = detail::max_value(change, detail::max_value(detail::abs_value(x1[n] - xp[n]),
+                                                                     detail::abs_value(v1[n] - vp[n])));
+                size = detail::max_value(size, detail::max_value(detail::abs_value(x1[n]), detail::abs_value(v1[n])));
+            }
+            if (!detail::all_finite(x1) || !detail::all_finite(v1)) return status::non_finite;
+            xp = x1;
+            vp = v1;
+            if (change <= tolerance * size) {
+                x_prev_ = x;
+                x = x1;
+                v = v1;
+                iterations_ = k;
+                next_.expect(t + dt, dt, x);
+                return status::ok;
+            }
+        }
+        return status::no_convergence;
+    }
+
+private:
+    State x_prev_{};
+    int iterations_ = 0;
+    detail::continuation<State> next_{};
+};
+
+}  // namespace odestep
+
+#endif
