@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, then runs every test: the host suite under g++ and clang++, C++17 and C++20,
-# and ASan+UBSan (each preset builds the tests, the examples and their checks), then the benchmark's quick
-# instruction-count check.
+# and ASan+UBSan (each preset builds the tests, the examples and their checks), the suite on emulated
+# Cortex-M cores, the firmware audit, and the benchmark's quick instruction-count check.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh test || { echo "test: could not install the dependencies"; exit 1; }
@@ -21,6 +21,10 @@ host_preset() {
 for preset in host host-cxx20 host-clang host-clang-cxx20 host-sanitize; do
   run "$preset" host_preset "$preset"
 done
+# The same portable tests cross-compiled and run on emulated Cortex-M3/M4F/M7/M33/M55 (M0+ built only),
+# then the firmware audit: no heap, no double arithmetic in float builds, flash and stack per stepper.
+run cortex-m scripts/test-targets.sh
+run audit scripts/audit.sh
 
 echo
 [ $failed -eq 0 ] || echo "failed: ${failures[*]}"

@@ -1,0 +1,246 @@
+#!/usr/bin/env bash
+# Firmware-discipline audit of odestep with arm-none-eabi-g++ (writes build/audit/, prints a markdown report):
+#
+#  1. examples/firmware_loop.cpp, linked with the bare board (toolchains/board/, no C library I/O) for
+#     Cortex-M0+, M3, M4F and M33 with the allocator wrapped away (-Wl,--wrap=malloc,...: an allocation
+#     anywhere fails the link), holds no malloc/free/_sbrk/operator new/delete/__cxa_* symbol, and, being a
+#     float program, no __aeabi_d* double-precision routine; run under QEMU where the core has a board.
+#  2. Every stepper's step() in float, compiled for M0+ and M4F at -Os and -O2, calls no __aeabi_d* routine
+#     (nothing in the library promotes float to double).
+#  3. Flash (.text) and stack of one step() per stepper, float and double, on M4F and M0+ at -Os and -O2:
+#     the step's own code plus every function of the library it reaches (not the compiler's soft-float or
+#     libc helpers, listed under the table), and the deepest path of -fstack-usage frames through them
+#     (-fcallgraph-info=su), for a 3-state Lorenz system.
+#
+# Usage: scripts/audit.sh            Exits non-zero if a check fails. Needs arm-none-eabi-g++ (newlib) and
+# awk; qemu-system-arm to run the firmware image (skipped without it). Installs nothing.
+set -uo pipefail
+cd "$(dirname "$0")/.." || exit 2
+root=$PWD
+out=$root/build/audit
+mkdir -p "$out"
+
+for tool in arm-none-eabi-g++ arm-none-eabi-nm awk; do
+  command -v "$tool" > /dev/null 2>&1 || {
+    echo "audit: $tool is missing (Debian: apt-get install gcc-arm-none-eabi libnewlib-arm-none-eabi" \
+         "libstdc++-arm-none-eabi-newlib)" >&2
+    exit 2
+  }
+done
+have_qemu=0
+command -v qemu-system-arm > /dev/null 2>&1 && have_qemu=1
+
+# The per-core settings, read from the toolchain files so there is one source of truth.
+setting() {  # setting CORE VARIABLE
+  sed -n "s/^set($2 \"\{0,1\}\([^\")]*\)\"\{0,1\}).*/\1/p" "$root/toolchains/$1.cmake"
+}
+
+failures=0
+fail() {
+  echo "FAIL: $*" >&2
+  failures=$((failures + 1))
+}
+
+board=$root/toolchains/board
+common_flags=(-std=c++17 -ffunction-sections -fdata-sections -fno-exceptions -fno-rtti
+              -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wdouble-promotion -Werror -I"$root/include")
+# shellcheck disable=SC2054  # the commas belong to the linker options
+no_alloc=(-Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=free,--wrap=aligned_alloc,--wrap=memalign
+          -Wl,--wrap=posix_memalign,--wrap=_malloc_r,--wrap=_calloc_r,--wrap=_realloc_r,--wrap=_free_r)
+forbidden='^(malloc|free|calloc|realloc|_malloc_r|_free_r|_sbrk|_sbrk_r|_Znw.*|_Zna.*|_Zdl.*|_Zda.*|__cxa_.*)$'
+
+report=$out/report.md
+{
+  echo "# odestep firmware audit"
+  echo
+  echo "arm-none-eabi-g++ $(arm-none-eabi-g++ -dumpversion), $(date -u +%Y-%m-%d)"
+  echo
+  echo "## 1. Firmware image (examples/firmware_loop.cpp, float RK4 at 1 kHz, bare board)"
+  echo
+  echo "| core | flags | .text | .data | .bss | allocator / C++ runtime symbols | \`__aeabi_d*\` | QEMU run |"
+  echo "|---|---|---:|---:|---:|---|---|---|"
+} > "$report"
+
+for core in cortex-m0plus cortex-m3 cortex-m4f cortex-m33; do
+  read -r -a cpu <<< "$(setting "$core" ODESTEP_TARGET_CPU_FLAGS)"
+  machine=$(setting "$core" ODESTEP_TARGET_QEMU_MACHINE)
+  script=$(setting "$core" ODESTEP_TARGET_LINKER_SCRIPT)
+  image=$out/firmware_loop-$core.elf
+  if ! arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" -Os -DODESTEP_BOARD_BARE=1 \
+       "$root/examples/firmware_loop.cpp" "$board/startup.cpp" "$board/syscalls.cpp" \
+       -nostartfiles -L"$board" -T"$board/$script" -Wl,--gc-sections "${no_alloc[@]}" -o "$image" \
+       2> "$out/firmware_loop-$core.log"; then
+    cat "$out/firmware_loop-$core.log" >&2
+    fail "$core: firmware_loop does not build or link without an allocator"
+    echo "| $core | \`${cpu[*]}\` | - | - | - | link FAILED | - | - |" >> "$report"
+    continue
+  fi
+  read -r text data bss _ < <(arm-none-eabi-size "$image" | awk 'NR == 2')
+  symbols=$(arm-none-eabi-nm "$image" | awk '{print $NF}')
+  runtime=$(grep -E "$forbidden" <<< "$symbols" | tr '\n' ' ')
+  doubles=$(grep -E '^__aeabi_d' <<< "$symbols" | tr '\n' ' ')
+  [[ -z "$runtime" ]] || fail "$core: firmware_loop contains $runtime"
+  [[ -z "$doubles" ]] || fail "$core: the float firmware_loop contains $doubles"
+  run=-
+  if [[ -n "$machine" && $have_qemu == 1 ]]; then
+    if timeout 60 qemu-system-arm -M "$machine" -nographic -monitor none \
+         -semihosting-config enable=on,target=native -kernel "$image" > "$out/firmware_loop-$core.out" 2>&1; then
+      run="ok ($machine)"
+    else
+      run="FAILED ($machine)"
+      fail "$core: firmware_loop failed under QEMU: $(tail -1 "$out/firmware_loop-$core.out")"
+    fi
+  fi
+  echo "| $core | \`${cpu[*]}\` | $text | $data | $bss | ${runtime:-none} | ${doubles:-none} | $run |" >> "$report"
+done
+
+# --- 2 and 3: one translation unit per (core, type, optimisation) with a step() wrapper per stepper ---
+methods=$(sed -n 's/^template <class State> using [a-z0-9_]* = explicit_rk<tableaux::\([a-z0-9_]*\), State>;$/\1/p' \
+            "$root/include/odestep/explicit_rk.hpp" | awk '!seen[$0]++')
+unit=$out/step_unit.cpp
+{
+  echo "// Generated by scripts/audit.sh: one non-inlined step() per stepper, state std::array<AUDIT_T, 3>."
+  echo "#include <odestep/odestep.hpp>"
+  echo "#include <array>"
+  echo "using state = std::array<AUDIT_T, 3>;"
+  echo "struct lorenz {"
+  echo "  void operator()(AUDIT_T, const state& x, state& d) const noexcept {"
+  echo "    d[0] = AUDIT_T(10) * (x[1] - x[0]);"
+  echo "    d[1] = x[0] * (AUDIT_T(28) - x[2]) - x[1];"
+  echo "    d[2] = x[0] * x[1] - AUDIT_T(8) / AUDIT_T(3) * x[2];"
+  echo "  }"
+  echo "};"
+  for m in $methods; do
+    echo "extern \"C\" __attribute__((noinline, used)) odestep::status audit_step_$m(state& y, AUDIT_T t, AUDIT_T dt) {"
+    echo "  return odestep::explicit_rk<odestep::tableaux::$m, state>{}.step(lorenz{}, y, t, dt);"
+    echo "}"
+  done
+} > "$unit"
+
+# measure OBJECT CALLGRAPH: prints "method text stack helpers" for every audit_step_* wrapper.
+measure() {
+  awk -v sizes_cmd="arm-none-eabi-nm -S $1" '
+    BEGIN {
+      while ((sizes_cmd | getline line) > 0) {
+        n = split(line, field, " ")
+        if (n == 4) size[field[4]] = strtonum_hex(field[2])
+      }
+    }
+    function strtonum_hex(h,    i, c, v) {
+      v = 0
+      for (i = 1; i <= length(h); i++) { c = index("0123456789abcdef", tolower(substr(h, i, 1))) - 1; v = v * 16 + c }
+      return v
+    }
+    function title(s) { sub(/^title: "/, "", s); sub(/".*/, "", s); sub(/^[^:]*\.cpp:/, "", s); return s }
+    /^node:/ {
+      match($0, /title: "[^"]*"/); name = title(substr($0, RSTART, RLENGTH))
+      if (match($0, /[0-9]+ bytes/)) frame[name] = substr($0, RSTART, RLENGTH) + 0
+      else external[name] = 1
+      nodes[name] = 1
+    }
+    /^edge:/ {
+      match($0, /sourcename: "[^"]*"/); s = substr($0, RSTART, RLENGTH); sub(/^sourcename/, "title", s); s = title(s)
+      match($0, /targetname: "[^"]*"/); t = substr($0, RSTART, RLENGTH); sub(/^targetname/, "title", t); t = title(t)
+      if (!((s, t) in edge)) { edge[s, t] = 1; callees[s] = callees[s] " " t }
+    }
+    function deepest(f,    n, list, i, d, best) {  # largest sum of frames on a call path from f
+      if (f in memo) return memo[f]
+      best = 0
+      n = split(callees[f], list, " ")
+      for (i = 1; i <= n; i++) if (!(list[i] in external)) { d = deepest(list[i]); if (d > best) best = d }
+      memo[f] = frame[f] + best
+      return memo[f]
+    }
+    function reach(f,    n, list, i) {
+      if (f in seen) return
+      seen[f] = 1
+      if (f in external) { helpers[f] = 1; return }
+      text += size[f]
+      n = split(callees[f], list, " ")
+      for (i = 1; i <= n; i++) reach(list[i])
+    }
+    END {
+      for (wrapper in nodes) {
+        if (wrapper !~ /^audit_step_/) continue
+        delete seen; delete helpers; text = 0
+        reach(wrapper)
+        h = ""
+        for (x in helpers) h = h (h == "" ? "" : ",") x
+        m = wrapper; sub(/^audit_step_/, "", m)
+        print m, text, deepest(wrapper), (h == "" ? "-" : h)
+      }
+    }' "$2"
+}
+
+declare -A text_of stack_of
+helpers_seen=""
+for core in cortex-m4f cortex-m0plus; do
+  read -r -a cpu <<< "$(setting "$core" ODESTEP_TARGET_CPU_FLAGS)"
+  for type in float double; do
+    for opt in -Os -O2; do
+      tag=$core-$type$opt
+      object=$out/step-$tag.o
+      if ! arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" "$opt" -DAUDIT_T="$type" -fstack-usage \
+           -fcallgraph-info=su -c "$unit" -o "$object" 2> "$out/step-$tag.log"; then
+        cat "$out/step-$tag.log" >&2
+        fail "$tag: the step unit does not compile"
+        continue
+      fi
+      if [[ $type == float ]]; then
+        doubles=$(arm-none-eabi-nm -u "$object" | awk '{print $NF}' | grep -E '^__aeabi_d' | tr '\n' ' ')
+        [[ -z "$doubles" ]] || fail "$tag: float steps call double-precision routines: $doubles"
+        echo "$tag ${doubles:-none}" >> "$out/float-doubles.txt"
+      fi
+      while read -r method text stack helpers; do
+        text_of[$method,$tag]=$text
+        stack_of[$method,$tag]=$stack
+        [[ $helpers == - ]] || helpers_seen+=" $tag:$helpers"
+      done < <(measure "$object" "${object%.o}.ci")
+    done
+  done
+done
+
+{
+  echo
+  echo "## 2. No double promotion in float steps"
+  echo
+  echo "| build | \`__aeabi_d*\` called by float step() of every stepper |"
+  echo "|---|---|"
+  [[ -f "$out/float-doubles.txt" ]] && awk '{ $1 = "| " $1 " |"; print $0 " |" }' "$out/float-doubles.txt"
+  rm -f "$out/float-doubles.txt"
+  echo
+  echo "## 3. Flash and stack of one step() (3-state system), bytes"
+  echo
+  echo "text = the step wrapper and every function it reaches in the unit (the library and the system itself); stack = deepest path of frames."
+  echo
+  printf '| stepper |'
+  for core in cortex-m4f cortex-m0plus; do for type in float double; do for opt in -Os -O2; do
+    printf ' %s %s %s text / stack |' "${core#cortex-}" "$type" "$opt"
+  done; done; done
+  echo
+  printf '|---|'
+  for _ in 1 2 3 4 5 6 7 8; do printf -- '---:|'; done
+  echo
+  for m in $methods; do
+    printf '| %s |' "$m"
+    for core in cortex-m4f cortex-m0plus; do for type in float double; do for opt in -Os -O2; do
+      tag=$core-$type$opt
+      printf ' %s / %s |' "${text_of[$m,$tag]:--}" "${stack_of[$m,$tag]:--}"
+    done; done; done
+    echo
+  done
+  echo
+  echo "Not counted: the compiler's run-time helpers the steps call (shared by every stepper):"
+  tr ' ' '\n' <<< "$helpers_seen" | awk -F: 'NF == 2 { split($2, h, ","); for (i in h) set[$1] = set[$1] " " h[i] }
+    END { for (k in set) { n = split(set[k], a, " "); s = ""; delete u
+          for (i = 1; i <= n; i++) if (!(a[i] in u)) { u[a[i]] = 1; s = s " " a[i] }
+          print "- " k ":" s } }' | sort
+} >> "$report"
+
+cat "$report"
+if ((failures > 0)); then
+  echo "audit: $failures check(s) FAILED" >&2
+  exit 1
+fi
+echo
+echo "audit: all checks passed (report: build/audit/report.md)"

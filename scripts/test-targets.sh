@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# Builds odestep's test images for the Cortex-M cores and runs them under QEMU (semihosting):
+#   Cortex-M3 (mps2-an385), M4F (mps2-an386), M7 (mps2-an500), M33 (mps2-an505), M55 (mps3-an547): build + run
+#   Cortex-M0+: build and size only (QEMU has no Cortex-M0+ board)
+# with the CMake presets of the same names (build/<preset>/). Exits non-zero if any core fails to configure,
+# build or pass; the others still run. Prints the time each core took.
+#
+# Usage: scripts/test-targets.sh [preset...]      (default: all six)
+# Environment: JOBS (parallel build jobs, default: nproc), ODESTEP_TARGET_CONFIGURE_ARGS (extra arguments
+# for every configure, e.g. "-DODESTEP_TEST_CXX_STANDARD=20").
+#
+# Installs nothing: needs cmake (>= 3.25), arm-none-eabi-gcc with newlib (Debian: gcc-arm-none-eabi,
+# libnewlib-arm-none-eabi, libstdc++-arm-none-eabi-newlib), qemu-system-arm and doctest-dev.
+set -uo pipefail
+
+cd "$(dirname "$0")/.." || exit 2
+
+emulated=(cortex-m3 cortex-m4f cortex-m7 cortex-m33 cortex-m55)
+build_only=(cortex-m0plus)
+if (($# > 0)); then
+  presets=("$@")
+else
+  presets=("${build_only[@]}" "${emulated[@]}")
+fi
+jobs="${JOBS:-$(nproc 2>/dev/null || echo 2)}"
+read -r -a extra_configure_args <<< "${ODESTEP_TARGET_CONFIGURE_ARGS:-}"
+
+missing=()
+for tool in cmake ctest arm-none-eabi-g++ qemu-system-arm; do
+  command -v "$tool" > /dev/null 2>&1 || missing+=("$tool")
+done
+if ((${#missing[@]} > 0)); then
+  echo "test-targets: missing ${missing[*]}." >&2
+  echo "  Debian: apt-get install cmake gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm doctest-dev" >&2
+  exit 2
+fi
+
+is_build_only() {
+  local p
+  for p in "${build_only[@]}"; do [[ "$p" == "$1" ]] && return 0; done
+  return 1
+}
+
+summary=()
+failed=()
+total_start=$SECONDS
+for preset in "${presets[@]}"; do
+  echo "=== ${preset}: configure and build"
+  start=$SECONDS
+  result=ok
+  if ! cmake --preset "$preset" "${extra_configure_args[@]}"; then
+    result="configure FAILED"
+  elif ! cmake --build --preset "$preset" --parallel "$jobs"; then
+    result="build FAILED"
+  fi
+  build_seconds=$((SECONDS - start))
+
+  test_seconds=-
+  if [[ "$result" == ok ]]; then
+    if is_build_only "$preset"; then
+      result="ok (built only)"
+      image=build/$preset/tests/odestep_target_tests.elf
+      if [[ -f "$image" ]] && command -v arm-none-eabi-size > /dev/null 2>&1; then
+        echo "=== ${preset}: size of the test image (not run: no QEMU board)"
+        arm-none-eabi-size "$image"
+      fi
+    else
+      echo "=== ${preset}: run under QEMU"
+      start=$SECONDS
+      if ! ctest --preset "$preset" --parallel "$jobs"; then
+        result="tests FAILED"
+      fi
+      test_seconds=$((SECONDS - start))
+    fi
+  fi
+  [[ "$result" == ok* ]] || failed+=("$preset")
+  summary+=("$(printf '%-14s %-18s build %4ss  tests %4ss' "$preset" "$result" "$build_seconds" "$test_seconds")")
+done
+
+echo
+echo "=== Cortex-M summary (${jobs} build jobs)"
+printf '%s\n' "${summary[@]}"
+echo "total: $((SECONDS - total_start))s"
+if ((${#failed[@]} > 0)); then
+  echo "FAILED: ${failed[*]}" >&2
+  exit 1
+fi
