@@ -68,6 +68,13 @@ std::size_t allocations_of_newtonian_calls() {
     run(odestep::leapfrog_position_form<vec>{});
     run(odestep::beeman<vec>{});
     run(odestep::predictor_corrector<vec>{});
+    run(odestep::euler_cromer<vec>{});
+    run(odestep::euler_cromer_drift_first<vec>{});
+    run(odestep::velocity_verlet<vec>{});
+    run(odestep::position_verlet<vec>{});
+    run(odestep::forest_ruth<vec>{});
+    run(odestep::yoshida6<vec>{});
+    run(odestep::blanes_moan4<vec>{});
     return odestep_test::allocations() - before;
 }
 

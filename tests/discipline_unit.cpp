@@ -45,6 +45,13 @@ T run_everything() {
     add(odestep::leapfrog_position_form<vec>{});
     add(odestep::beeman<vec>{});
     add(odestep::predictor_corrector<vec>{});
+    add(odestep::euler_cromer<vec>{});
+    add(odestep::euler_cromer_drift_first<vec>{});
+    add(odestep::velocity_verlet<vec>{});
+    add(odestep::position_verlet<vec>{});
+    add(odestep::forest_ruth<vec>{});
+    add(odestep::yoshida6<vec>{});
+    add(odestep::blanes_moan4<vec>{});
     return sum;
 }
 }  // namespace

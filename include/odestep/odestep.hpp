@@ -10,5 +10,6 @@
 #include "explicit_rk.hpp"
 #include "integrate.hpp"
 #include "newtonian.hpp"
+#include "symplectic.hpp"
 
 #endif

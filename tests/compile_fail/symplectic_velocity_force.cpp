@@ -1,0 +1,10 @@
+// Must NOT compile: a symplectic splitting needs a force of position alone (a ctest checks the message).
+#include <odestep/odestep.hpp>
+
+int main() {
+    using S = std::array<double, 2>;
+    auto drag = [](double, const S& x, const S& v) { return S{-x[0] - v[0], -x[1] - v[1]}; };
+    S x{1.0, 0.0};
+    S v{0.0, 1.0};
+    return odestep::velocity_verlet<S>{}.step(drag, x, v, 0.0, 0.1) == odestep::status::ok ? 0 : 1;
+}
