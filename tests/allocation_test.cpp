@@ -78,6 +78,31 @@ std::size_t allocations_of_newtonian_calls() {
     return odestep_test::allocations() - before;
 }
 
+
+template <class T>
+std::size_t allocations_of_boris_calls() {
+    using vec = std::array<T, 3>;
+    auto fields = [](T, const vec&, vec& E, vec& B) {
+        E = {T(0), T(0.5), T(0)};
+        B = {T(0), T(0), T(1)};
+    };
+    auto poison = [](T, const vec&, vec& E, vec&) { E[0] = std::numeric_limits<T>::quiet_NaN(); };
+    const std::size_t before = odestep_test::allocations();
+    auto run = [&](const auto& pusher) {
+        vec x{T(0), T(0), T(0)};
+        vec v{T(1), T(0), T(0)};
+        (void)pusher.stagger(fields, x, v, T(0), T(0.01));
+        (void)odestep::integrate(pusher, fields, x, v, T(0), T(1), T(0.01), [](T, const vec&, const vec&) {});
+        (void)odestep::integrate_n_steps(pusher, fields, x, v, T(0), T(0.01), 10);
+        (void)pusher.synchronize(fields, x, v, T(1), T(0.01));
+        (void)odestep::integrate(pusher, fields, x, v, T(0), T(1), T(-0.1));  // wrong_direction
+        (void)odestep::integrate(pusher, poison, x, v, T(0), T(1), T(0.1));   // non_finite
+    };
+    run(odestep::boris<vec>{T(-2)});
+    run(odestep::boris_relativistic<vec>{T(-2), T(3)});
+    return odestep_test::allocations() - before;
+}
+
 }  // namespace
 
 TEST_CASE("allocation: the counter sees an allocation when there is one") {
@@ -100,4 +125,10 @@ TEST_CASE("allocation: no Newtonian stepper allocates, in float, double or long 
     CHECK(allocations_of_newtonian_calls<float>() == 0);
     CHECK(allocations_of_newtonian_calls<double>() == 0);
     CHECK(allocations_of_newtonian_calls<long double>() == 0);
+}
+
+TEST_CASE("allocation: the Boris pushers do not allocate, in float, double or long double") {
+    CHECK(allocations_of_boris_calls<float>() == 0);
+    CHECK(allocations_of_boris_calls<double>() == 0);
+    CHECK(allocations_of_boris_calls<long double>() == 0);
 }

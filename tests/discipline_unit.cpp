@@ -52,6 +52,22 @@ T run_everything() {
     add(odestep::forest_ruth<vec>{});
     add(odestep::yoshida6<vec>{});
     add(odestep::blanes_moan4<vec>{});
+    // and the Boris pushers
+    using vec3 = std::array<T, 3>;
+    auto fields = [](T, const vec3& x, vec3& E, vec3& B) {
+        E = {T(0), T(0.5), x[2]};
+        B = {T(0), T(0), T(1)};
+    };
+    auto push = [&](const auto& pusher) {
+        vec3 x{T(0), T(0), T(0)};
+        vec3 v{T(1), T(0), T(0)};
+        if (pusher.stagger(fields, x, v, T(0), T(0.125)) == odestep::status::ok &&
+            odestep::integrate(pusher, fields, x, v, T(0), T(1), T(0.125)).status == odestep::status::ok &&
+            pusher.synchronize(fields, x, v, T(1), T(0.125)) == odestep::status::ok)
+            sum += x[0] + v[0];
+    };
+    push(odestep::boris<vec3>{T(2)});
+    push(odestep::boris_relativistic<vec3>{T(2), T(3)});
     return sum;
 }
 }  // namespace

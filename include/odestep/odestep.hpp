@@ -11,5 +11,6 @@
 #include "integrate.hpp"
 #include "newtonian.hpp"
 #include "symplectic.hpp"
+#include "boris.hpp"
 
 #endif
