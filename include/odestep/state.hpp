@@ -35,6 +35,33 @@ using value_type_t = typename state_traits<State>::value_type;
 #define ODESTEP_UNROLL _Pragma("GCC unroll 16")
 #endif
 
+// The stepper's per-component arithmetic is written as small functions over the table (one per weight row,
+// class of terms, ...); they are expression fragments, meant to be inlined where they are used whatever
+// the optimization level (at -Os a fragment used twice could otherwise stay a call inside the loop).
+#if defined(__GNUC__) || defined(__clang__)
+#define ODESTEP_INLINE [[gnu::always_inline]] inline
+#else
+#define ODESTEP_INLINE inline
+#endif
+
+// The non-finite path of a step is the rare one: the compiler lays it out of line, so that the ordinary
+// path runs straight through.
+#if defined(__GNUC__) || defined(__clang__)
+#define ODESTEP_UNLIKELY(condition) __builtin_expect(static_cast<bool>(condition), 0)
+#else
+#define ODESTEP_UNLIKELY(condition) (condition)
+#endif
+
+namespace detail {
+/// True where the build optimizes for size (-Os, -Oz): the loops over the components stay loops there,
+/// and a few choices between two equivalent forms of a computation follow (the step's finiteness sum).
+#if defined(__OPTIMIZE_SIZE__)
+inline constexpr bool optimizing_for_size = true;
+#else
+inline constexpr bool optimizing_for_size = false;
+#endif
+}  // namespace detail
+
 namespace detail {
 
 template <class T>
@@ -44,18 +71,33 @@ constexpr bool is_finite(T x) noexcept {
     return x * T(0) == T(0);
 }
 
-/// True when every component is finite. The hot path is the plain sum of the components, finite
-/// whenever they all are, unless it overflows; only then, or when a component is not finite, is the exact
-/// per-component test run (x_i * 0 is zero exactly when x_i is finite).
+/// The fast half of the finiteness test, for a plain sum of values: sum - sum is +0 when the sum is finite
+/// and NaN when it is NaN or +-Inf (Inf - Inf is NaN), and only NaN compares unequal to itself. A sum of
+/// finite values is finite unless it overflows, so `true` proves every term finite, and `false` means
+/// that a term is not finite or that the sum overflowed (then ask each_finite).
+template <class T>
+constexpr bool finite_sum(T sum) noexcept {
+    const T d = sum - sum;
+    return d == d;  // one compare and one branch on unordered; no zero constant
+}
+
+/// The exact test, component by component (x_i * 0 is zero exactly when x_i is finite).
+template <class T, std::size_t N>
+constexpr bool each_finite(const std::array<T, N>& y) noexcept {
+    for (std::size_t n = 0; n < N; ++n)
+        if (!is_finite(y[n])) return false;
+    return true;
+}
+
+/// True when every component is finite. The hot path is the plain sum of the components (finite_sum);
+/// only when that fails, because a component is not finite or because the sum overflowed, is the exact
+/// per-component test run.
 template <class T, std::size_t N>
 constexpr bool all_finite(const std::array<T, N>& y) noexcept {
     T sum = y[0];
     ODESTEP_UNROLL
     for (std::size_t n = 1; n < N; ++n) sum += y[n];
-    if (sum - sum == T(0)) return true;  // NaN - NaN and Inf - Inf are NaN
-    for (std::size_t n = 0; n < N; ++n)
-        if (!is_finite(y[n])) return false;
-    return true;  // finite components whose sum overflowed
+    return finite_sum(sum) || each_finite(y);
 }
 
 }  // namespace detail
