@@ -103,6 +103,27 @@ std::size_t allocations_of_boris_calls() {
     return odestep_test::allocations() - before;
 }
 
+template <class T>
+std::size_t allocations_of_multistep_calls() {
+    const std::size_t before = odestep_test::allocations();
+    auto run = [](auto stepper) {
+        state3<T> y{T(1), T(1), T(1)};
+        (void)odestep::integrate(stepper, lorenz{}, y, T(0), T(1), T(0.125), [](T, const state3<T>&) {});
+        (void)odestep::integrate(stepper, lorenz{}, y, T(1), T(2), T(0.3));  // step_mismatch at the end
+        (void)stepper.step(lorenz{}, y, T(7), T(0.5));                        // step_mismatch (t, dt)
+        stepper.reset();
+        (void)odestep::integrate_n_steps(stepper, lorenz{}, y, T(0), T(0.01), 10);
+        auto poison = [](T, const state3<T>&) { return state3<T>{std::numeric_limits<T>::quiet_NaN(), T(0), T(0)}; };
+        (void)stepper.step(poison, y, T(0.1), T(0.01));  // non_finite
+    };
+    run(odestep::adams_bashforth2<state3<T>>{});
+    run(odestep::adams_bashforth3<state3<T>>{});
+    run(odestep::adams_bashforth4<state3<T>>{});
+    run(odestep::adams_bashforth5<state3<T>>{});
+    run(odestep::adams_bashforth_moulton4<state3<T>>{});
+    return odestep_test::allocations() - before;
+}
+
 }  // namespace
 
 TEST_CASE("allocation: the counter sees an allocation when there is one") {
@@ -131,4 +152,10 @@ TEST_CASE("allocation: the Boris pushers do not allocate, in float, double or lo
     CHECK(allocations_of_boris_calls<float>() == 0);
     CHECK(allocations_of_boris_calls<double>() == 0);
     CHECK(allocations_of_boris_calls<long double>() == 0);
+}
+
+TEST_CASE("allocation: no multistep stepper allocates, in float, double or long double") {
+    CHECK(allocations_of_multistep_calls<float>() == 0);
+    CHECK(allocations_of_multistep_calls<double>() == 0);
+    CHECK(allocations_of_multistep_calls<long double>() == 0);
 }

@@ -68,6 +68,17 @@ T run_everything() {
     };
     push(odestep::boris<vec3>{T(2)});
     push(odestep::boris_relativistic<vec3>{T(2), T(3)});
+    // and the Adams family, whose derivative history lives in the stepper objects too
+    auto add_adams = [&](auto stepper) {
+        state4<T> y{T(1), T(0), T(1), T(0)};
+        if (odestep::integrate_n_steps(stepper, oscillators{}, y, T(0), T(0.125), 8).status == odestep::status::ok)
+            sum += y[0];
+    };
+    add_adams(odestep::adams_bashforth2<state4<T>>{});
+    add_adams(odestep::adams_bashforth3<state4<T>>{});
+    add_adams(odestep::adams_bashforth4<state4<T>>{});
+    add_adams(odestep::adams_bashforth5<state4<T>>{});
+    add_adams(odestep::adams_bashforth_moulton4<state4<T>>{});
     return sum;
 }
 }  // namespace

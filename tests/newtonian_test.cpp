@@ -192,6 +192,20 @@ TEST_CASE("newtonian: history-keeping methods make one evaluation per step once 
     check(b, "beeman");
 }
 
+TEST_CASE("newtonian: far from t = 0 the counter's times still continue the history (no silent restarts)") {
+    // integrate's t0 + i dt and the stepper's t + dt differ by more than an ULP of dt at |t| ~ 1000; the
+    // history must still be recognised: 20000 steps cost 20001 evaluations, and a time of Inf never continues.
+    std::size_t calls = 0;
+    odestep::half_step<vec2<double>> stepper;
+    vec2<double> x{1.0, 0.0};
+    vec2<double> v{0.0, 1.0};
+    REQUIRE(odestep::integrate_n_steps(stepper, counting_oscillator{&calls}, x, v, -1000.0, 0.1, 20000).status == odestep::status::ok);
+    CHECK(calls == 20001);
+    calls = 0;
+    (void)stepper.step(counting_oscillator{&calls}, x, v, std::numeric_limits<double>::infinity(), 0.1);
+    CHECK(calls == 2);  // a fresh start (this force ignores t), never a continuation of the history
+}
+
 TEST_CASE("newtonian: the reversible methods return to their start after N steps forward and N back") {
     // On the oscillator (no orbital shear to amplify round-off): 1000 steps each way. The reversal is a
     // fresh start of the history (dt changed sign), so the return is exact in real arithmetic and off by

@@ -7,6 +7,7 @@
 
 #include "state.hpp"
 #include "status.hpp"
+#include "tableau.hpp"  // detail::abs_value
 
 namespace odestep {
 
@@ -62,6 +63,16 @@ constexpr status plan_steps(T t0, T t1, T dt, std::size_t& steps) noexcept {
 
 namespace detail {
 
+// The last step of a run over [t0, t1]: t1 - t, except that a difference from dt within the rounding of the
+// grid's times is rounding, not a shorter step, and the step is dt exactly (0.3 - 0.2 is not 0.1 in double;
+// a multistep method would take it for a new step size).
+template <class T>
+constexpr T last_step(T t0, T t1, T t, T dt) noexcept {
+    const T h = t1 - t;
+    const T grid = T(4) * std::numeric_limits<T>::epsilon() * (abs_value(t0) + abs_value(t1));
+    return abs_value(h - dt) <= grid ? dt : h;
+}
+
 // The one fixed-step loop, for a first-order state (y) or a Newtonian pair (x, v): the stepper is called
 // as step(f, states..., t, h) and the observer as observe(t, states...).
 template <class T, class Stepper, class System, class Observer, class... States>
@@ -76,7 +87,7 @@ integrate_result<T> drive(Stepper& stepper, System& f, Observer& observe, T t0, 
         // t_i = t0 + i dt from the counter, never a running sum (in float, a running t += 1e-3 reaches
         // 991.14 instead of 1000 after 10^6 steps); the last step is shortened to end on t1.
         const T next = last ? t1 : t0 + static_cast<T>(i + 1) * dt;
-        const status s = stepper.step(f, ys..., t, last ? t1 - t : dt);
+        const status s = stepper.step(f, ys..., t, last ? last_step(t0, t1, t, dt) : dt);
         if (s != status::ok) return {s, t, i};
         observe(next, static_cast<const States&>(ys)...);
         t = next;

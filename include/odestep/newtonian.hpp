@@ -80,21 +80,25 @@ constexpr State plus_scaled(const State& x, T c, const State& v) noexcept {
     return out;
 }
 
-// Where a history-keeping stepper expects its next step: the time (within a few ULPs: integrate computes
-// t from its counter, the stepper as t + dt), the same dt, and the same position object. Anything else
-// means someone else's state or a new grid, and the stepper starts afresh instead of continuing.
+// Where a history-keeping stepper expects its next step: the time (within a few ULPs of the run's times:
+// integrate computes t0 + i dt from its counter, the stepper t + dt, and far from zero the two differ by
+// more than an ULP of dt), the same dt, and the same position object. Anything else, a non-finite t
+// included, means someone else's state or a new grid, and the stepper starts afresh.
 template <class State, class T = value_type_t<State>>
 struct continuation {
     T t = T(0);
     T dt = T(0);
+    T t_start = T(0);  // where this history began: the counter's times are t_start + i dt
     const State* x = nullptr;
 
     constexpr bool matches(T t_now, T dt_now, const State& x_now) const noexcept {
-        const T slack = T(4) * std::numeric_limits<T>::epsilon() * (abs_value(t_now) + abs_value(dt_now));
-        return x == &x_now && dt == dt_now && abs_value(t_now - t) <= slack;
+        if (x != &x_now || dt != dt_now || !is_finite(t_now)) return false;
+        const T slack = T(8) * std::numeric_limits<T>::epsilon() * (abs_value(t) + abs_value(dt) + abs_value(t_start));
+        return abs_value(t_now - t) <= slack;
     }
-    constexpr void expect(T t_next, T dt_now, const State& x_now) noexcept {
-        t = t_next;
+    constexpr void expect(T t_now, T dt_now, const State& x_now) noexcept {
+        if (!matches(t_now, dt_now, x_now)) t_start = t_now;  // a fresh history starts here
+        t = t_now + dt_now;
         dt = dt_now;
         x = &x_now;
     }
@@ -263,7 +267,7 @@ public:
         v = v1;
         v_half_ = v_half;
         a_next_ = a1;
-        next_.expect(t + dt, dt, x);
+        next_.expect(t, dt, x);
         return status::ok;
     }
 
@@ -317,7 +321,7 @@ public:
         x = x1;
         v = v1;
         a_next_ = a1;
-        next_.expect(t + dt, dt, x);
+        next_.expect(t, dt, x);
         return status::ok;
     }
 
@@ -372,7 +376,7 @@ public:
         v = v1;
         a_prev_ = a0;
         a_now_ = a1;
-        next_.expect(t + dt, dt, x);
+        next_.expect(t, dt, x);
         return status::ok;
     }
 
@@ -446,7 +450,7 @@ public:
                 x = x1;
                 v = v1;
                 iterations_ = k;
-                next_.expect(t + dt, dt, x);
+                next_.expect(t, dt, x);
                 return status::ok;
             }
         }

@@ -9,6 +9,7 @@
 #include "tableaux.hpp"
 #include "explicit_rk.hpp"
 #include "integrate.hpp"
+#include "multistep.hpp"
 #include "newtonian.hpp"
 #include "symplectic.hpp"
 #include "boris.hpp"

@@ -14,7 +14,7 @@ enum class [[nodiscard]] status : unsigned char {
     too_many_steps,   ///< (t1 - t0) / dt does not fit the step counter (std::size_t); nothing was touched
     non_finite,       ///< a step produced NaN or Inf (from the right-hand side or by overflow); it was rolled back
     no_convergence,   ///< an iterated corrector did not meet its tolerance within its iteration cap; rolled back
-    step_mismatch,    ///< a multistep method was asked for a dt other than its history's; nothing was touched
+    step_mismatch,    ///< a multistep method was asked for a dt, or a t, other than where its history ends; nothing touched
     invalid_tolerance,  ///< a tolerance is zero, negative or NaN; nothing was touched
 };
 

@@ -1,0 +1,331 @@
+// odestep: Adams-Bashforth and Adams-Bashforth-Moulton (PECE) multistep methods for y' = f(t, y).
+#ifndef ODESTEP_MULTISTEP_HPP
+#define ODESTEP_MULTISTEP_HPP
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+
+#include "explicit_rk.hpp"
+#include "state.hpp"
+#include "status.hpp"
+#include "system.hpp"
+#include "tableau.hpp"
+
+namespace odestep {
+
+/// The coefficients of a k-step Adams method with fixed step h, typed in T:
+///
+///     predictor (Adams-Bashforth):  p       = y_n + h * sum_{j=0}^{k-1} beta_j f_{n-j}
+///     corrector (Adams-Moulton, C = k only):
+///                                   y_{n+1} = y_n + h * (gamma_0 f(t_{n+1}, p) + sum_{j=1}^{k-1} gamma_j f_{n+1-j})
+///
+/// with f_m = f(t_m, y_m). Without a corrector (C = 0) the predictor is y_{n+1}. The k-step Adams-Bashforth
+/// weights integrate the polynomial through f_n, ..., f_{n-k+1} over [t_n, t_{n+1}] and have order k; the
+/// Adams-Moulton weights with k values f_{n+1}, ..., f_{n-k+2} have order k too. One corrector pass with the
+/// predicted value (PECE) keeps order k.
+template <class T, std::size_t K, std::size_t C = 0>
+struct adams_table {
+    static_assert(K >= 2, "odestep: an Adams table needs at least two steps (one step is forward Euler)");
+    static_assert(C == 0 || C == K, "odestep: the corrector has as many weights as the predictor, or none");
+    using value_type = T;
+    static constexpr std::size_t steps = K;
+    static constexpr bool has_corrector = C > 0;
+
+    std::array<T, K> beta{};   ///< weights of f_n, f_{n-1}, ..., f_{n-k+1}
+    std::array<T, C> gamma{};  ///< weights of f_{n+1} (at the predicted state), f_n, ..., f_{n-k+2}
+    int order = 0;
+};
+
+/// The tables. Each is a tag type whose `table<T>` is typed in T, written as exact rationals T(p) / T(q).
+///
+/// Source of every coefficient: Hairer, Norsett & Wanner, Solving Ordinary Differential Equations I (2nd ed.),
+/// Sec. III.1, the tables of the explicit Adams methods (Bashforth & Adams 1883) and of the implicit Adams
+/// methods (Moulton 1926). They are the integrals over [0, 1] of the Lagrange basis polynomials through the
+/// nodes s = 0, -1, ..., -(k-1) (explicit) and s = 1, 0, ..., -(k-2) (implicit); the test suite checks the
+/// order conditions sum_j w_j s_j^q = 1/(q+1), q < k, and that q = k fails.
+namespace adams_tables {
+
+/// Two-step Adams-Bashforth, order 2:  y_{n+1} = y_n + h (3 f_n - f_{n-1}) / 2.
+struct bashforth2 {
+    static constexpr const char* name = "Adams-Bashforth 2";
+    template <class T>
+    static constexpr adams_table<T, 2> table{{T(3) / T(2), T(-1) / T(2)}, {}, 2};
+};
+
+/// Three-step Adams-Bashforth, order 3:  y_{n+1} = y_n + h (23 f_n - 16 f_{n-1} + 5 f_{n-2}) / 12.
+struct bashforth3 {
+    static constexpr const char* name = "Adams-Bashforth 3";
+    template <class T>
+    static constexpr adams_table<T, 3> table{{T(23) / T(12), T(-16) / T(12), T(5) / T(12)}, {}, 3};
+};
+
+/// Four-step Adams-Bashforth, order 4:  y_{n+1} = y_n + h (55 f_n - 59 f_{n-1} + 37 f_{n-2} - 9 f_{n-3}) / 24.
+struct bashforth4 {
+    static constexpr const char* name = "Adams-Bashforth 4";
+    template <class T>
+    static constexpr adams_table<T, 4> table{{T(55) / T(24), T(-59) / T(24), T(37) / T(24), T(-9) / T(24)}, {}, 4};
+};
+
+/// Five-step Adams-Bashforth, order 5:
+///     y_{n+1} = y_n + h (1901 f_n - 2774 f_{n-1} + 2616 f_{n-2} - 1274 f_{n-3} + 251 f_{n-4}) / 720.
+struct bashforth5 {
+    static constexpr const char* name = "Adams-Bashforth 5";
+    template <class T>
+    static constexpr adams_table<T, 5> table{
+        {T(1901) / T(720), T(-2774) / T(720), T(2616) / T(720), T(-1274) / T(720), T(251) / T(720)}, {}, 5};
+};
+
+/// Adams-Bashforth-Moulton of order 4 in PECE mode: the four-step Adams-Bashforth predictor and the
+/// three-step (order 4) Adams-Moulton corrector, applied once:
+///     p       = y_n + h (55 f_n - 59 f_{n-1} + 37 f_{n-2} - 9 f_{n-3}) / 24
+///     y_{n+1} = y_n + h (9 f(t_{n+1}, p) + 19 f_n - 5 f_{n-1} + f_{n-2}) / 24
+struct bashforth_moulton4 {
+    static constexpr const char* name = "Adams-Bashforth-Moulton 4 (PECE)";
+    template <class T>
+    static constexpr adams_table<T, 4, 4> table{
+        {T(55) / T(24), T(-59) / T(24), T(37) / T(24), T(-9) / T(24)},
+        {T(9) / T(24), T(19) / T(24), T(-5) / T(24), T(1) / T(24)},
+        4};
+};
+
+}  // namespace adams_tables
+
+namespace detail {
+template <class Stepper>
+struct is_explicit_rk : std::false_type {};
+template <class Method, class State>
+struct is_explicit_rk<explicit_rk<Method, State>> : std::true_type {};
+}  // namespace detail
+
+/// A fixed-step Adams method (Adams-Bashforth, or Adams-Bashforth-Moulton PECE) from `Method::table<T>`.
+///
+/// Each step evaluates f_n = f(t_n, y_n) at its start and combines it with the k-1 derivatives of the
+/// previous steps, which the stepper keeps (with the dt they were taken with and the time the next step
+/// must start at) in a fixed-size ring buffer inside the object: no heap. An Adams-Bashforth step then
+/// costs one evaluation of f, a PECE step two (the second E of PECE is the next step's f_n).
+///
+/// Starting: while fewer than k-1 derivatives are known, `step` takes the step with the one-step `Starter`
+/// (an explicit_rk, rk4 by default) and records the derivative at the start of the step from the starter's
+/// own first evaluation (the first needed stage of an explicit table has c = 0 and reads y itself, so it is
+/// f(t_n, y_n); no extra evaluation). Those k-1 steps are exactly the starter's; the formula takes over at
+/// step k. The starter's order p should be at least k - 1 for the method to keep its order.
+///
+/// History checks. The first step after construction or `reset()` accepts any t and dt. After that, a step
+/// whose dt differs from the history's (exact comparison) or whose t is not the end of the previous step
+/// returns `status::step_mismatch` and touches nothing: neither y nor the history. "The end of the previous
+/// step" is t_prev + dt to within 8 eps (|t_prev + dt| + |dt| + |t_first|), t_first being the time of the
+/// first step since the reset. That admits the times t0 + i dt of a step counter (as odestep::integrate
+/// computes them), whose rounding is relative to t0 and i dt and not only to t (from t0 = -1000 with
+/// dt = 0.1, a slack of a few ULPs of |t| + |dt| alone fails near t = -50), but not a state from another time.
+/// After a mismatch the caller may `reset()` and go on with the new dt or t (the next k-1 steps are the
+/// starter's again), or go on with the right ones as if the bad call had not happened.
+///
+/// Because of that, `odestep::integrate` over an interval that is not a whole number of steps fails at its
+/// last, shortened step with `step_mismatch` (y is then the state at the returned t, the last good one).
+/// Over a whole number of steps it works: integrate takes its last step as dt exactly when t1 - t_{n-1}
+/// differs from dt by the rounding of the grid only (over [0, 1] with dt = 0.1, 0.09999999999999998).
+///
+/// A NaN or Inf from f or in the new state returns `status::non_finite`, and y and the history are left
+/// exactly as they were: the call may be retried.
+///
+/// After changing y by hand (an event, a new initial condition), call `reset()`: the history belongs to the
+/// old trajectory, and the t check cannot tell a changed y at the right time.
+template <class Method, class State, class Starter = rk4<State>>
+class adams {
+public:
+    using state_type = State;
+    using value_type = value_type_t<State>;
+    using method_type = Method;
+    using starter_type = Starter;
+
+private:
+    using T = value_type;
+    static constexpr auto tab = Method::template table<T>;
+    using table_type = std::remove_const_t<decltype(tab)>;
+    static constexpr std::size_t K = table_type::steps;
+    static constexpr std::size_t M = K - 1;  // derivatives kept between steps
+    static constexpr std::size_t N = state_traits<State>::size;
+    static constexpr bool pece = table_type::has_corrector;
+    static_assert(detail::is_explicit_rk<Starter>::value, "odestep: the starter must be an odestep::explicit_rk");
+    static_assert(std::is_same_v<typename Starter::state_type, State>,
+                  "odestep: the starter must step the same State as the multistep method");
+
+public:
+    static constexpr int order = tab.order;
+    static constexpr std::size_t stages = 1;
+    /// k: the method reads f at k successive steps, f_n (evaluated in the step) and the k-1 it keeps.
+    static constexpr std::size_t steps = K;
+    /// Right-hand-side evaluations of a step once the history is full: 1 (Adams-Bashforth) or 2 (PECE).
+    static constexpr std::size_t rhs_evals_per_started_step = pece ? 2 : 1;
+    /// The most one `step` call makes, the starter's steps included.
+    static constexpr std::size_t rhs_evals_per_step = Starter::rhs_evals_per_step > rhs_evals_per_started_step
+                                                          ? Starter::rhs_evals_per_step
+                                                          : rhs_evals_per_started_step;
+    static constexpr bool error_estimate = false;
+    static constexpr bool symplectic = false;
+    static constexpr bool self_starting = true;
+
+    /// y <- y(t + dt). See the class comment for `step_mismatch` and `non_finite`; on either, neither y nor
+    /// the history changed.
+    template <class System>
+    [[nodiscard]] status step(System&& f, State& y, T t, T dt) {
+        if (count_ > 0) {
+            if (dt != dt_) return status::step_mismatch;
+            // The slack is from the history's times (finite), so a NaN or infinite t is a mismatch.
+            const T slack = T(8) * std::numeric_limits<T>::epsilon() *
+                            (detail::abs_value(t_next_) + detail::abs_value(dt_) + detail::abs_value(t_first_));
+            if (!(detail::abs_value(t - t_next_) <= slack)) return status::step_mismatch;
+        }
+        if (count_ < M) return starter_step(f, y, t, dt);
+        State fn;
+        detail::evaluate(f, t, y, fn);
+        State next;
+        if constexpr (pece) {
+            State predicted;
+            combine<predictor>(predicted, y, fn, fn, dt);  // the second fn is not read: beta has no f_{n+1}
+            State fp;
+            detail::evaluate(f, t + dt, static_cast<const State&>(predicted), fp);
+            combine<corrector>(next, y, fp, fn, dt);
+        } else {
+            combine<predictor>(next, y, fn, fn, dt);
+        }
+        // f_n enters y_{n+1} with a non-zero weight (as does f(t_{n+1}, p) in PECE), and x * Inf or x * NaN is
+        // never finite, nor is a sum with a non-finite term: testing y_{n+1} tests the derivatives too.
+        if (!detail::all_finite(next)) return status::non_finite;
+        commit(fn, t, dt);
+        assign(y, next);
+        return status::ok;
+    }
+
+    /// Empties the history: the next step accepts any t and dt and the next k-1 steps are the starter's.
+    void reset() noexcept {
+        count_ = 0;
+        slot_ = 0;
+    }
+
+    /// How many past derivatives are kept, 0 to k-1; at k-1 the multistep formula steps.
+    std::size_t history_size() const noexcept { return count_; }
+
+private:
+    std::array<State, M> history_{};  // ring buffer; the next f_n goes to slot_, f_{n-j} is at slot_ - j mod M
+    T dt_ = T(0);
+    T t_next_ = T(0);   // where the next step must start: t + dt of the last step
+    T t_first_ = T(0);  // time of the first step since reset, for the tolerance of the t check
+    std::size_t count_ = 0;
+    std::size_t slot_ = 0;
+
+    static void assign(State& to, const State& from) noexcept {
+        ODESTEP_UNROLL
+        for (std::size_t n = 0; n < N; ++n) to[n] = from[n];
+    }
+
+    // Weight rows as types, so each weight is a constant expression inside `combine`. Index 0 is the
+    // derivative evaluated in this step (f_n for the predictor, f(t_{n+1}, p) for the corrector), index 1 the
+    // next one (f_n for the corrector), and the rest come from the history: predictor index j is f_{n-j},
+    // corrector index j is f_{n+1-j}.
+    struct predictor {
+        static constexpr std::size_t size = K;
+        static constexpr std::size_t from_history = 1;  // first index read from the history
+        static constexpr T weight(std::size_t j) noexcept { return tab.beta[j]; }
+    };
+    struct corrector {
+        static constexpr std::size_t size = pece ? K : 0;
+        static constexpr std::size_t from_history = 2;
+        static constexpr T weight(std::size_t j) noexcept { return pece ? tab.gamma[j] : T(0); }
+    };
+
+    // out = y + sum_j (dt w_j) v_j with v_0 = first, v_1 = second (if W reads it there) and the history.
+    // Every loop has a constant trip count and is unrolled (except when optimizing for size), so the
+    // weights are constants and the history is addressed through K - 1 pointers chosen once per step.
+    template <class W>
+    void combine(State& out, const State& y, const State& first, const State& second, T dt) const noexcept {
+        constexpr std::size_t L = W::size;
+        std::array<T, L> w;  // dt w_j, hoisted out of the loop over components
+        ODESTEP_UNROLL
+        for (std::size_t j = 0; j < L; ++j) w[j] = dt * W::weight(j);
+        std::array<const State*, L> v;
+        v[0] = &first;
+        if constexpr (W::from_history == 2) v[1] = &second;
+        ODESTEP_UNROLL
+        for (std::size_t j = W::from_history; j < L; ++j) v[j] = &past(j + 1 - W::from_history);
+        ODESTEP_UNROLL
+        for (std::size_t n = 0; n < N; ++n) {
+            T acc = w[0] * (*v[0])[n];
+            ODESTEP_UNROLL
+            for (std::size_t j = 1; j < L; ++j) acc += w[j] * (*v[j])[n];
+            out[n] = y[n] + acc;
+        }
+    }
+
+    // f_{n-back}, back = 1 .. M: the entry `back` slots before the next free one (slot_ < M).
+    const State& past(std::size_t back) const noexcept {
+        return history_[slot_ >= back ? slot_ - back : slot_ + M - back];
+    }
+
+    void commit(const State& fn, T t, T dt) noexcept {
+        if (count_ == 0) t_first_ = t;
+        assign(history_[slot_], fn);
+        slot_ = slot_ + 1 == M ? 0 : slot_ + 1;
+        if (count_ < M) ++count_;
+        dt_ = dt;
+        t_next_ = t + dt;
+    }
+
+    // The user's f, called through detail::evaluate, recording f(t, y) the first time the starter asks for it.
+    template <class System>
+    struct recording_system {
+        System& f;
+        const T t;
+        const State& y;
+        State& fn;
+        bool recorded;
+        void operator()(T time, const State& x, State& dydt) {
+            detail::evaluate(f, time, x, dydt);
+            if (!recorded && time == t && same(x, y)) {
+                assign(fn, dydt);
+                recorded = true;
+            }
+        }
+        static bool same(const State& a, const State& b) noexcept {
+            for (std::size_t n = 0; n < N; ++n)
+                if (!(a[n] == b[n])) return false;
+            return true;
+        }
+    };
+
+    template <class System>
+    status starter_step(System& f, State& y, T t, T dt) {
+        State next = y;
+        State fn;
+        recording_system<System> recorder{f, t, static_cast<const State&>(y), fn, false};
+        const status s = Starter{}.step(recorder, next, t, dt);
+        if (s != status::ok) return s;
+        // Not reached with an explicit_rk starter (its first evaluation is f(t, y)); kept so that a starter
+        // that never asks for f(t, y) costs an evaluation rather than a wrong history.
+        if (!recorder.recorded) detail::evaluate(f, t, static_cast<const State&>(y), fn);
+        // The starter checked its new state; f_n is checked here, as a starter may read it only through a
+        // stage input (the midpoint rule's b_1 = 0), where a non-finite value need not reach the new state.
+        if (!detail::all_finite(fn)) return status::non_finite;
+        commit(fn, t, dt);
+        assign(y, next);
+        return status::ok;
+    }
+};
+
+/// The named multistep steppers. The starter, for the first k-1 steps, is rk4 unless given.
+template <class State, class Starter = rk4<State>>
+using adams_bashforth2 = adams<adams_tables::bashforth2, State, Starter>;
+template <class State, class Starter = rk4<State>>
+using adams_bashforth3 = adams<adams_tables::bashforth3, State, Starter>;
+template <class State, class Starter = rk4<State>>
+using adams_bashforth4 = adams<adams_tables::bashforth4, State, Starter>;
+template <class State, class Starter = rk4<State>>
+using adams_bashforth5 = adams<adams_tables::bashforth5, State, Starter>;
+template <class State, class Starter = rk4<State>>
+using adams_bashforth_moulton4 = adams<adams_tables::bashforth_moulton4, State, Starter>;
+
+}  // namespace odestep
+
+#endif
