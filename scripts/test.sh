@@ -25,6 +25,8 @@ done
 # then the firmware audit: no heap, no double arithmetic in float builds, flash and stack per stepper.
 run cortex-m scripts/test-targets.sh
 run audit scripts/audit.sh
+# Instruction counts are deterministic: RK4 on Lorenz must stay within 1.05x a hand-written loop at -O2.
+run bench-quick scripts/bench.sh --quick
 
 echo
 [ $failed -eq 0 ] || echo "failed: ${failures[*]}"

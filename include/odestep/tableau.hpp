@@ -54,51 +54,6 @@ constexpr bool sums_to(const std::array<T, S>& v, std::size_t count, T target) n
     return abs_value(sum - target) <= tolerance;
 }
 
-/// A weight vector whose non-zero weights are all small integer multiples of one of them: w_j = r_j g,
-/// |r_j| <= 16, exactly in T. g has the magnitude of the smallest weight and the sign that makes r_j > 0 for
-/// the first of the largest multiples. `magnitude` lists the distinct |r_j|, largest first.
-template <class T, std::size_t S>
-struct integer_multiples {
-    bool applies = false;
-    T g = T(0);
-    std::array<long, S> r{};
-    std::size_t classes = 0;
-    std::array<long, S> magnitude{};
-};
-
-template <class T, std::size_t S>
-constexpr integer_multiples<T, S> find_integer_multiples(const std::array<T, S>& w) noexcept {
-    integer_multiples<T, S> m{};
-    T smallest = T(0);
-    for (std::size_t j = 0; j < S; ++j)
-        if (w[j] != T(0) && (smallest == T(0) || abs_value(w[j]) < smallest)) smallest = abs_value(w[j]);
-    if (smallest == T(0)) return m;
-    long top = 0;
-    std::size_t lead = S;
-    for (std::size_t j = 0; j < S; ++j) {
-        if (w[j] == T(0)) continue;
-        const T q = abs_value(w[j]) / smallest;
-        if (!(q <= T(16))) return m;
-        const long r = static_cast<long>(q + T(1) / T(2));
-        if (T(r) * smallest != abs_value(w[j])) return m;  // not an exact multiple in T
-        m.r[j] = w[j] < T(0) ? -r : r;
-        if (r > top) {
-            top = r;
-            lead = j;
-        }
-    }
-    const long sign = m.r[lead] < 0 ? -1 : 1;
-    for (std::size_t j = 0; j < S; ++j) m.r[j] *= sign;
-    m.g = sign < 0 ? -smallest : smallest;
-    for (long v = top; v >= 1; --v) {
-        bool present = false;
-        for (std::size_t j = 0; j < S; ++j) present = present || m.r[j] == v || m.r[j] == -v;
-        if (present) m.magnitude[m.classes++] = v;
-    }
-    m.applies = true;
-    return m;
-}
-
 }  // namespace detail
 
 /// Row sums c_i = sum_j a_ij, the first node c_1 = 0 (explicit), and sum b = sum bhat_e = 1.

@@ -1,0 +1,213 @@
+// odestep benchmarks: the hand-written loops, as a careful engineer writes them without a library:
+// named coefficients, loop-invariant products such as h/2 and h/6 hoisted, plain `for` loops over the
+// components, no copies beyond the one stage input, and no NaN/Inf check (odestep's check is what the
+// comparison charges it for).
+//
+// RK4 is the textbook y + h/6 (k1 + 2 (k2 + k3) + k4). DOPRI5 and DOP853 are written stage by stage as in
+// E. Hairer's dopri5.f and dop853.f (Y1(I) = Y(I) + H*(A31*K1(I) + A32*K2(I)) and so on, same coefficients),
+// except that they are stateless, like odestep's step: k1 is evaluated at the start of every step rather
+// than carried over from the last stage of the step before (FSAL). RKF78 is written the same way; its
+// eleventh stage feeds only the seventh-order solution, so the eighth-order step skips it.
+#ifndef ODESTEP_BENCH_HAND_HPP
+#define ODESTEP_BENCH_HAND_HPP
+
+#include <array>
+#include <cstddef>
+
+namespace bench::hand {
+
+/// Classic RK4: y <- y + h/6 (k1 + 2 (k2 + k3) + k4). f(t, y, dydt).
+template <class T, std::size_t N, class F>
+inline void rk4(F f, std::array<T, N>& y, T t, T h) {
+    std::array<T, N> k1, k2, k3, k4, yt;
+    const T h2 = h * T(0.5);
+    const T h6 = h * (T(1) / T(6));
+    f(t, y, k1);
+    for (std::size_t i = 0; i < N; ++i) yt[i] = y[i] + h2 * k1[i];
+    f(t + h2, yt, k2);
+    for (std::size_t i = 0; i < N; ++i) yt[i] = y[i] + h2 * k2[i];
+    f(t + h2, yt, k3);
+    for (std::size_t i = 0; i < N; ++i) yt[i] = y[i] + h * k3[i];
+    f(t + h, yt, k4);
+    for (std::size_t i = 0; i < N; ++i) y[i] += h6 * (k1[i] + T(2) * (k2[i] + k3[i]) + k4[i]);
+}
+
+/// Dormand-Prince 5(4) with its error estimate, as dopri5.f: the fifth-order solution is the seventh
+/// stage's input, and err = h (e1 k1 + e3 k3 + ... + e7 k7) with e = b - bhat.
+template <std::size_t N, class F>
+inline void dopri5(F f, std::array<double, N>& y, double t, double h, std::array<double, N>& err) {
+    constexpr double c2 = 0.2, c3 = 0.3, c4 = 0.8, c5 = 8.0 / 9.0;
+    constexpr double a21 = 0.2;
+    constexpr double a31 = 3.0 / 40.0, a32 = 9.0 / 40.0;
+    constexpr double a41 = 44.0 / 45.0, a42 = -56.0 / 15.0, a43 = 32.0 / 9.0;
+    constexpr double a51 = 19372.0 / 6561.0, a52 = -25360.0 / 2187.0, a53 = 64448.0 / 6561.0, a54 = -212.0 / 729.0;
+    constexpr double a61 = 9017.0 / 3168.0, a62 = -355.0 / 33.0, a63 = 46732.0 / 5247.0, a64 = 49.0 / 176.0,
+                     a65 = -5103.0 / 18656.0;
+    constexpr double a71 = 35.0 / 384.0, a73 = 500.0 / 1113.0, a74 = 125.0 / 192.0, a75 = -2187.0 / 6784.0,
+                     a76 = 11.0 / 84.0;
+    constexpr double e1 = 71.0 / 57600.0, e3 = -71.0 / 16695.0, e4 = 71.0 / 1920.0, e5 = -17253.0 / 339200.0,
+                     e6 = 22.0 / 525.0, e7 = -1.0 / 40.0;
+    std::array<double, N> k1, k2, k3, k4, k5, k6, k7, y1;
+    f(t, y, k1);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * a21 * k1[i];
+    f(t + c2 * h, y1, k2);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a31 * k1[i] + a32 * k2[i]);
+    f(t + c3 * h, y1, k3);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a41 * k1[i] + a42 * k2[i] + a43 * k3[i]);
+    f(t + c4 * h, y1, k4);
+    for (std::size_t i = 0; i < N; ++i)
+        y1[i] = y[i] + h * (a51 * k1[i] + a52 * k2[i] + a53 * k3[i] + a54 * k4[i]);
+    f(t + c5 * h, y1, k5);
+    for (std::size_t i = 0; i < N; ++i)
+        y1[i] = y[i] + h * (a61 * k1[i] + a62 * k2[i] + a63 * k3[i] + a64 * k4[i] + a65 * k5[i]);
+    f(t + h, y1, k6);
+    for (std::size_t i = 0; i < N; ++i)
+        y1[i] = y[i] + h * (a71 * k1[i] + a73 * k3[i] + a74 * k4[i] + a75 * k5[i] + a76 * k6[i]);
+    f(t + h, y1, k7);
+    for (std::size_t i = 0; i < N; ++i)
+        err[i] = h * (e1 * k1[i] + e3 * k3[i] + e4 * k4[i] + e5 * k5[i] + e6 * k6[i] + e7 * k7[i]);
+    y = y1;
+}
+
+/// DOP853's eighth-order step (12 stages), as dop853.f, coefficients to the digits published there.
+template <std::size_t N, class F>
+inline void dop853(F f, std::array<double, N>& y, double t, double h) {
+    constexpr double c2 = 0.526001519587677318785587544488e-01, c3 = 0.789002279381515978178381316732e-01,
+                     c4 = 0.118350341907227396726757197510e+00, c5 = 0.281649658092772603273242802490e+00,
+                     c6 = 0.333333333333333333333333333333e+00, c7 = 0.25e+00,
+                     c8 = 0.307692307692307692307692307692e+00, c9 = 0.651282051282051282051282051282e+00,
+                     c10 = 0.6e+00, c11 = 0.857142857142857142857142857142e+00;
+    constexpr double a21 = 5.26001519587677318785587544488e-2;
+    constexpr double a31 = 1.97250569845378994544595329183e-2, a32 = 5.91751709536136983633785987549e-2;
+    constexpr double a41 = 2.95875854768068491816892993775e-2, a43 = 8.87627564304205475450678981324e-2;
+    constexpr double a51 = 2.41365134159266685502369798665e-1, a53 = -8.84549479328286085344864962717e-1,
+                     a54 = 9.24834003261792003115737966543e-1;
+    constexpr double a61 = 3.7037037037037037037037037037e-2, a64 = 1.70828608729473871279604482173e-1,
+                     a65 = 1.25467687566822425016691814123e-1;
+    constexpr double a71 = 3.7109375e-2, a74 = 1.70252211019544039314978060272e-1,
+                     a75 = 6.02165389804559606850219397283e-2, a76 = -1.7578125e-2;
+    constexpr double a81 = 3.70920001185047927108779319836e-2, a84 = 1.70383925712239993810214054705e-1,
+                     a85 = 1.07262030446373284651809199168e-1, a86 = -1.53194377486244017527936158236e-2,
+                     a87 = 8.27378916381402288758473766002e-3;
+    constexpr double a91 = 6.24110958716075717114429577812e-1, a94 = -3.36089262944694129406857109825e0,
+                     a95 = -8.68219346841726006818189891453e-1, a96 = 2.75920996994467083049415600797e1,
+                     a97 = 2.01540675504778934086186788979e1, a98 = -4.34898841810699588477366255144e1;
+    constexpr double a101 = 4.77662536438264365890433908527e-1, a104 = -2.48811461997166764192642586468e0,
+                     a105 = -5.90290826836842996371446475743e-1, a106 = 2.12300514481811942347288949897e1,
+                     a107 = 1.52792336328824235832596922938e1, a108 = -3.32882109689848629194453265587e1,
+                     a109 = -2.03312017085086261358222928593e-2;
+    constexpr double a111 = -9.3714243008598732571704021658e-1, a114 = 5.18637242884406370830023853209e0,
+                     a115 = 1.09143734899672957818500254654e0, a116 = -8.14978701074692612513997267357e0,
+                     a117 = -1.85200656599969598641566180701e1, a118 = 2.27394870993505042818970056734e1,
+                     a119 = 2.49360555267965238987089396762e0, a1110 = -3.0467644718982195003823669022e0;
+    constexpr double a121 = 2.27331014751653820792359768449e0, a124 = -1.05344954667372501984066689879e1,
+                     a125 = -2.00087205822486249909675718444e0, a126 = -1.79589318631187989172765950534e1,
+                     a127 = 2.79488845294199600508499808837e1, a128 = -2.85899827713502369474065508674e0,
+                     a129 = -8.87285693353062954433549289258e0, a1210 = 1.23605671757943030647266201528e1,
+                     a1211 = 6.43392746015763530355970484046e-1;
+    constexpr double b1 = 5.42937341165687622380535766363e-2, b6 = 4.45031289275240888144113950566e0,
+                     b7 = 1.89151789931450038304281599044e0, b8 = -5.8012039600105847814672114227e0,
+                     b9 = 3.1116436695781989440891606237e-1, b10 = -1.52160949662516078556178806805e-1,
+                     b11 = 2.01365400804030348374776537501e-1, b12 = 4.47106157277725905176885569043e-2;
+    std::array<double, N> k1, k2, k3, k4, k5, k6, k7, k8, k9, k10, k11, k12, y1;
+    f(t, y, k1);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * a21 * k1[i];
+    f(t + c2 * h, y1, k2);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a31 * k1[i] + a32 * k2[i]);
+    f(t + c3 * h, y1, k3);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a41 * k1[i] + a43 * k3[i]);
+    f(t + c4 * h, y1, k4);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a51 * k1[i] + a53 * k3[i] + a54 * k4[i]);
+    f(t + c5 * h, y1, k5);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a61 * k1[i] + a64 * k4[i] + a65 * k5[i]);
+    f(t + c6 * h, y1, k6);
+    for (std::size_t i = 0; i < N; ++i)
+        y1[i] = y[i] + h * (a71 * k1[i] + a74 * k4[i] + a75 * k5[i] + a76 * k6[i]);
+    f(t + c7 * h, y1, k7);
+    for (std::size_t i = 0; i < N; ++i)
+        y1[i] = y[i] + h * (a81 * k1[i] + a84 * k4[i] + a85 * k5[i] + a86 * k6[i] + a87 * k7[i]);
+    f(t + c8 * h, y1, k8);
+    for (std::size_t i = 0; i < N; ++i)
+        y1[i] = y[i] + h * (a91 * k1[i] + a94 * k4[i] + a95 * k5[i] + a96 * k6[i] + a97 * k7[i] + a98 * k8[i]);
+    f(t + c9 * h, y1, k9);
+    for (std::size_t i = 0; i < N; ++i)
+        y1[i] = y[i] + h * (a101 * k1[i] + a104 * k4[i] + a105 * k5[i] + a106 * k6[i] + a107 * k7[i] +
+                            a108 * k8[i] + a109 * k9[i]);
+    f(t + c10 * h, y1, k10);
+    for (std::size_t i = 0; i < N; ++i)
+        y1[i] = y[i] + h * (a111 * k1[i] + a114 * k4[i] + a115 * k5[i] + a116 * k6[i] + a117 * k7[i] +
+                            a118 * k8[i] + a119 * k9[i] + a1110 * k10[i]);
+    f(t + c11 * h, y1, k11);
+    for (std::size_t i = 0; i < N; ++i)
+        y1[i] = y[i] + h * (a121 * k1[i] + a124 * k4[i] + a125 * k5[i] + a126 * k6[i] + a127 * k7[i] +
+                            a128 * k8[i] + a129 * k9[i] + a1210 * k10[i] + a1211 * k11[i]);
+    f(t + h, y1, k12);
+    for (std::size_t i = 0; i < N; ++i)
+        y[i] += h * (b1 * k1[i] + b6 * k6[i] + b7 * k7[i] + b8 * k8[i] + b9 * k9[i] + b10 * k10[i] +
+                     b11 * k11[i] + b12 * k12[i]);
+}
+
+/// Runge-Kutta-Fehlberg 7(8), the eighth-order solution only (Fehlberg 1968, NASA TR R-287, Table X).
+/// Stage 11 feeds only the seventh-order solution and is skipped: 12 evaluations.
+template <std::size_t N, class F>
+inline void rkf78(F f, std::array<double, N>& y, double t, double h) {
+    constexpr double c2 = 2.0 / 27.0, c3 = 1.0 / 9.0, c4 = 1.0 / 6.0, c5 = 5.0 / 12.0, c6 = 0.5, c7 = 5.0 / 6.0,
+                     c8 = 1.0 / 6.0, c9 = 2.0 / 3.0, c10 = 1.0 / 3.0;
+    constexpr double a21 = 2.0 / 27.0;
+    constexpr double a31 = 1.0 / 36.0, a32 = 1.0 / 12.0;
+    constexpr double a41 = 1.0 / 24.0, a43 = 1.0 / 8.0;
+    constexpr double a51 = 5.0 / 12.0, a53 = -25.0 / 16.0, a54 = 25.0 / 16.0;
+    constexpr double a61 = 1.0 / 20.0, a64 = 1.0 / 4.0, a65 = 1.0 / 5.0;
+    constexpr double a71 = -25.0 / 108.0, a74 = 125.0 / 108.0, a75 = -65.0 / 27.0, a76 = 125.0 / 54.0;
+    constexpr double a81 = 31.0 / 300.0, a85 = 61.0 / 225.0, a86 = -2.0 / 9.0, a87 = 13.0 / 900.0;
+    constexpr double a91 = 2.0, a94 = -53.0 / 6.0, a95 = 704.0 / 45.0, a96 = -107.0 / 9.0, a97 = 67.0 / 90.0,
+                     a98 = 3.0;
+    constexpr double a101 = -91.0 / 108.0, a104 = 23.0 / 108.0, a105 = -976.0 / 135.0, a106 = 311.0 / 54.0,
+                     a107 = -19.0 / 60.0, a108 = 17.0 / 6.0, a109 = -1.0 / 12.0;
+    constexpr double a121 = 3.0 / 205.0, a126 = -6.0 / 41.0, a127 = -3.0 / 205.0, a128 = -3.0 / 41.0,
+                     a129 = 3.0 / 41.0, a1210 = 6.0 / 41.0;
+    constexpr double a131 = -1777.0 / 4100.0, a134 = -341.0 / 164.0, a135 = 4496.0 / 1025.0, a136 = -289.0 / 82.0,
+                     a137 = 2193.0 / 4100.0, a138 = 51.0 / 82.0, a139 = 33.0 / 164.0, a1310 = 12.0 / 41.0,
+                     a1312 = 1.0;
+    constexpr double b6 = 34.0 / 105.0, b7 = 9.0 / 35.0, b8 = 9.0 / 35.0, b9 = 9.0 / 280.0, b10 = 9.0 / 280.0,
+                     b12 = 41.0 / 840.0, b13 = 41.0 / 840.0;
+    std::array<double, N> k1, k2, k3, k4, k5, k6, k7, k8, k9, k10, k12, k13, y1;
+    f(t, y, k1);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * a21 * k1[i];
+    f(t + c2 * h, y1, k2);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a31 * k1[i] + a32 * k2[i]);
+    f(t + c3 * h, y1, k3);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a41 * k1[i] + a43 * k3[i]);
+    f(t + c4 * h, y1, k4);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a51 * k1[i] + a53 * k3[i] + a54 * k4[i]);
+    f(t + c5 * h, y1, k5);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a61 * k1[i] + a64 * k4[i] + a65 * k5[i]);
+    f(t + c6 * h, y1, k6);
+    for (std::size_t i = 0; i < N; ++i)
+        y1[i] = y[i] + h * (a71 * k1[i] + a74 * k4[i] + a75 * k5[i] + a76 * k6[i]);
+    f(t + c7 * h, y1, k7);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a81 * k1[i] + a85 * k5[i] + a86 * k6[i] + a87 * k7[i]);
+    f(t + c8 * h, y1, k8);
+    for (std::size_t i = 0; i < N; ++i)
+        y1[i] = y[i] + h * (a91 * k1[i] + a94 * k4[i] + a95 * k5[i] + a96 * k6[i] + a97 * k7[i] + a98 * k8[i]);
+    f(t + c9 * h, y1, k9);
+    for (std::size_t i = 0; i < N; ++i)
+        y1[i] = y[i] + h * (a101 * k1[i] + a104 * k4[i] + a105 * k5[i] + a106 * k6[i] + a107 * k7[i] +
+                            a108 * k8[i] + a109 * k9[i]);
+    f(t + c10 * h, y1, k10);
+    for (std::size_t i = 0; i < N; ++i)
+        y1[i] = y[i] + h * (a121 * k1[i] + a126 * k6[i] + a127 * k7[i] + a128 * k8[i] + a129 * k9[i] +
+                            a1210 * k10[i]);
+    f(t, y1, k12);
+    for (std::size_t i = 0; i < N; ++i)
+        y1[i] = y[i] + h * (a131 * k1[i] + a134 * k4[i] + a135 * k5[i] + a136 * k6[i] + a137 * k7[i] +
+                            a138 * k8[i] + a139 * k9[i] + a1310 * k10[i] + a1312 * k12[i]);
+    f(t + h, y1, k13);
+    for (std::size_t i = 0; i < N; ++i)
+        y[i] += h * (b6 * k6[i] + b7 * k7[i] + b8 * k8[i] + b9 * k9[i] + b10 * k10[i] + b12 * k12[i] +
+                     b13 * k13[i]);
+}
+
+}  // namespace bench::hand
+
+#endif

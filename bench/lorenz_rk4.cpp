@@ -1,0 +1,56 @@
+// Lorenz (3 states, double), classic RK4, fixed step.
+#include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
+
+#include "gsl.hpp"
+#include "hand.hpp"
+#include "harness.hpp"
+#include "problems.hpp"
+
+namespace {
+using State = std::array<double, 3>;
+constexpr auto rhs = [](double, const State& y, State& d) { bench::lorenz<double>(y, d); };
+constexpr auto odeint_rhs = [](const State& y, State& d, double) { bench::lorenz<double>(y, d); };
+int gsl_rhs(double, const double y[], double d[], void*) {
+    bench::lorenz<double>(y, d);
+    return GSL_SUCCESS;
+}
+boost::numeric::odeint::runge_kutta4<State> odeint_rk4;
+bench::gsl_stepper gsl_rk4(gsl_odeiv2_step_rk4, gsl_rhs, 3);
+}  // namespace
+
+BENCH_STEP int bench_step_lorenz_rk4_odestep(State& y, State&, double t, double dt) {
+    return static_cast<int>(odestep::rk4<State>{}.step(rhs, y, t, dt));
+}
+BENCH_STEP int bench_step_lorenz_rk4_hand(State& y, State&, double t, double dt) {
+    bench::hand::rk4(rhs, y, t, dt);
+    return 0;
+}
+BENCH_STEP int bench_step_lorenz_rk4_odeint(State& y, State&, double t, double dt) {
+    odeint_rk4.do_step(odeint_rhs, y, t, dt);
+    return 0;
+}
+BENCH_STEP int bench_step_lorenz_rk4_gsl(State& y, State& err, double t, double dt) {
+    return gsl_rk4.apply(y.data(), err.data(), t, dt);
+}
+
+int main(int argc, char** argv) {
+    const State y0{-8.0, 8.0, 27.0};
+    const double dt = 0.005;
+    const int steps = 100;
+    bench::problem<State> p{"lorenz_rk4", y0, 0.0, dt, steps,
+                            bench::reference_solution<3>(
+                                [](long double, const auto& y, auto& d) { bench::lorenz<long double>(y, d); },
+                                y0, 0.0L, steps * 0.005L, 16 * steps),
+                            // Round-off: 100 steps of a few ulps each, amplified a few times over t = 0.5.
+                            1e-12,
+                            // RK4 with h = 0.005 on Lorenz: global error 3.5e-8 relative (GSL, which steps
+                            // by h/2: 2e-9); a step of lower order misses this by orders of magnitude.
+                            1e-7, false};
+    return bench::main<State>(argc, argv, p,
+                              {{"odestep", "odestep::rk4", bench_step_lorenz_rk4_odestep, true},
+                               {"hand", "hand-written RK4 loop", bench_step_lorenz_rk4_hand, true},
+                               {"odeint", "Odeint runge_kutta4<std::array> do_step", bench_step_lorenz_rk4_odeint,
+                                true},
+                               {"gsl", "GSL rk4 (step doubling: 11 f evaluations, error estimate)",
+                                bench_step_lorenz_rk4_gsl, false}});
+}
