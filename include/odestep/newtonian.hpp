@@ -107,18 +107,26 @@ struct continuation {
 
 }  // namespace detail
 
+/// The traits every Newtonian stepper publishes. Evals is the most one step can cost (the first step of a
+/// history-keeping method, or the corrector's cap).
+template <class State, int Order, std::size_t Evals, bool Symplectic, bool Reversible>
+struct newtonian_traits {
+    using state_type = State;
+    using value_type = value_type_t<State>;
+    static constexpr int order = Order;
+    static constexpr std::size_t rhs_evals_per_step = Evals;
+    static constexpr std::size_t accelerations_per_step = Evals;
+    static constexpr bool symplectic = Symplectic;
+    static constexpr bool time_reversible = Reversible;
+    static constexpr bool self_starting = true;
+};
+
 /// Euler for Newton's equations: x_{n+1} = x_n + v_n dt, v_{n+1} = v_n + a(t_n, x_n, v_n) dt.
 /// Order 1; on the oscillator its energy grows by exactly (1 + dt^2) per step.
 template <class State>
-class newtonian_euler {
+class newtonian_euler : public newtonian_traits<State, 1, 1, false, false> {
 public:
-    using state_type = State;
-    using value_type = value_type_t<State>;
-    static constexpr int order = 1;
-    static constexpr std::size_t rhs_evals_per_step = 1;
-    static constexpr bool symplectic = false;
-    static constexpr bool time_reversible = false;
-    static constexpr bool self_starting = true;
+    using typename newtonian_traits<State, 1, 1, false, false>::value_type;
     static constexpr bool error_estimate = false;
 
     template <class Accel>
@@ -136,15 +144,9 @@ public:
 /// The midpoint algorithm: v_{n+1} = v_n + a_n dt, x_{n+1} = x_n + (v_n + v_{n+1}) dt / 2
 /// (so x_{n+1} = x_n + v_n dt + a_n dt^2 / 2). Globally first order, like Euler, in v.
 template <class State>
-class newtonian_midpoint {
+class newtonian_midpoint : public newtonian_traits<State, 1, 1, false, false> {
 public:
-    using state_type = State;
-    using value_type = value_type_t<State>;
-    static constexpr int order = 1;
-    static constexpr std::size_t rhs_evals_per_step = 1;
-    static constexpr bool symplectic = false;
-    static constexpr bool time_reversible = false;
-    static constexpr bool self_starting = true;
+    using typename newtonian_traits<State, 1, 1, false, false>::value_type;
     static constexpr bool error_estimate = false;
 
     template <class Accel>
@@ -172,17 +174,11 @@ public:
 /// Its error estimate is the difference to the Euler step of the same start: x: a_n dt^2 / 2,
 /// v: (a_mid - a_n) dt.
 template <class State>
-class newtonian_euler_richardson {
+class newtonian_euler_richardson : public newtonian_traits<State, 2, 2, false, false> {
 public:
-    using state_type = State;
-    using value_type = value_type_t<State>;
-    static constexpr int order = 2;
+    using typename newtonian_traits<State, 2, 2, false, false>::value_type;
     static constexpr int embedded_order = 1;
-    static constexpr std::size_t rhs_evals_per_step = 2;
     static constexpr std::size_t rhs_evals_per_error_step = 2;
-    static constexpr bool symplectic = false;
-    static constexpr bool time_reversible = false;
-    static constexpr bool self_starting = true;
     static constexpr bool error_estimate = true;
 
     template <class Accel>
@@ -236,15 +232,9 @@ private:
 /// step costs one evaluation (two on the first step). A step that does not continue the last one (another
 /// t, dt or position object) self-starts again; after changing x or v in place, call reset().
 template <class State>
-class half_step {
+class half_step : public newtonian_traits<State, 2, 2, true, true> {
 public:
-    using state_type = State;
-    using value_type = value_type_t<State>;
-    static constexpr int order = 2;
-    static constexpr std::size_t rhs_evals_per_step = 2;  // the first step; later steps make one
-    static constexpr bool symplectic = true;
-    static constexpr bool time_reversible = true;
-    static constexpr bool self_starting = true;
+    using typename newtonian_traits<State, 2, 2, true, true>::value_type;
     static constexpr bool error_estimate = false;
 
     constexpr void reset() noexcept { next_.clear(); }
@@ -282,15 +272,9 @@ private:
 /// self-started with x_1 = x_0 + v_0 dt + a_0 dt^2 / 2. To give v at the new time, each step also forms
 /// x_{n+2} from a_{n+1}, which it keeps as the next step's a_n: one evaluation per step (two on the first).
 template <class State>
-class leapfrog_position_form {
+class leapfrog_position_form : public newtonian_traits<State, 2, 2, true, true> {
 public:
-    using state_type = State;
-    using value_type = value_type_t<State>;
-    static constexpr int order = 2;
-    static constexpr std::size_t rhs_evals_per_step = 2;  // the first step; later steps make one
-    static constexpr bool symplectic = true;
-    static constexpr bool time_reversible = true;
-    static constexpr bool self_starting = true;
+    using typename newtonian_traits<State, 2, 2, true, true>::value_type;
     static constexpr bool error_estimate = false;
 
     constexpr void reset() noexcept { next_.clear(); }
@@ -337,15 +321,9 @@ private:
 /// self-started by one velocity Verlet step (x_1 = x_0 + v_0 dt + a_0 dt^2/2, v_1 = v_0 + (a_0 + a_1) dt/2).
 /// a_{n+1} is kept for the next step: one evaluation per step (two on the first).
 template <class State>
-class beeman {
+class beeman : public newtonian_traits<State, 2, 2, false, false> {
 public:
-    using state_type = State;
-    using value_type = value_type_t<State>;
-    static constexpr int order = 2;
-    static constexpr std::size_t rhs_evals_per_step = 2;  // the first step; later steps make one
-    static constexpr bool symplectic = false;
-    static constexpr bool time_reversible = false;
-    static constexpr bool self_starting = true;
+    using typename newtonian_traits<State, 2, 2, false, false>::value_type;
     static constexpr bool error_estimate = false;
 
     constexpr void reset() noexcept { next_.clear(); }
@@ -394,16 +372,10 @@ private:
 /// prediction x_p = x_0 + v_0 dt + a_0 dt^2 / 2. Accepts velocity-dependent forces (v_p starts as
 /// v_n + a_n dt).
 template <class State>
-class predictor_corrector {
+class predictor_corrector : public newtonian_traits<State, 2, 1 + 16, false, false> {
 public:
-    using state_type = State;
-    using value_type = value_type_t<State>;
-    static constexpr int order = 2;
-    static constexpr int max_iterations = 16;
-    static constexpr std::size_t rhs_evals_per_step = 1 + max_iterations;
-    static constexpr bool symplectic = false;
-    static constexpr bool time_reversible = false;
-    static constexpr bool self_starting = true;
+    using typename newtonian_traits<State, 2, 1 + 16, false, false>::value_type;
+    static constexpr int max_iterations = 16;  // the corrector's cap: rhs_evals_per_step = 1 + max_iterations
     static constexpr bool error_estimate = false;
 
     /// Relative tolerance of the corrector iteration, in units of the state's magnitude.
