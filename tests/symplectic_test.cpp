@@ -787,3 +787,18 @@ static_assert(std::is_same_v<decltype(std::declval<const odestep::forest_ruth<st
 static_assert(odestep::is_consistent(odestep::splittings::yoshida6::table<float>));
 static_assert(odestep::is_consistent(odestep::splittings::blanes_moan4::table<long double>));
 static_assert(odestep::is_consistent(odestep::splittings::forest_ruth::table<float>));
+
+TEST_CASE("velocity Verlet keeps its acceleration far from t = 0 too: 20000 steps from t0 = -1000 cost 20001 evaluations") {
+    // integrate_n_steps' t0 + i dt and the stepper's t + dt differ by more than an ULP of dt at |t| ~ 1000.
+    using S = std::array<double, 2>;
+    std::size_t calls = 0;
+    auto spring = [&calls](double, const S& q) {
+        ++calls;
+        return S{-q[0], -q[1]};
+    };
+    odestep::velocity_verlet<S> stepper;
+    S x{1.0, 0.0};
+    S v{0.0, 1.0};
+    REQUIRE(odestep::integrate_n_steps(stepper, spring, x, v, -1000.0, 0.1, 20000).status == odestep::status::ok);
+    CHECK(calls == 20001);
+}

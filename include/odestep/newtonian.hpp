@@ -91,10 +91,16 @@ struct continuation {
     T t_start = T(0);  // where this history began: the counter's times are t_start + i dt
     const State* x = nullptr;
 
-    constexpr bool matches(T t_now, T dt_now, const State& x_now) const noexcept {
-        if (x != &x_now || dt != dt_now || !is_finite(t_now)) return false;
+    /// The same position object at the expected time, whatever the dt (what a kept acceleration a(t, x)
+    /// needs: it does not depend on the next step's size).
+    constexpr bool at(T t_now, const State& x_now) const noexcept {
+        if (x != &x_now || !is_finite(t_now)) return false;
         const T slack = T(8) * std::numeric_limits<T>::epsilon() * (abs_value(t) + abs_value(dt) + abs_value(t_start));
         return abs_value(t_now - t) <= slack;
+    }
+    /// ... and the same dt (what a history on a grid needs).
+    constexpr bool matches(T t_now, T dt_now, const State& x_now) const noexcept {
+        return dt == dt_now && at(t_now, x_now);
     }
     constexpr void expect(T t_now, T dt_now, const State& x_now) noexcept {
         if (!matches(t_now, dt_now, x_now)) t_start = t_now;  // a fresh history starts here

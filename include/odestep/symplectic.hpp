@@ -4,7 +4,6 @@
 #define ODESTEP_SYMPLECTIC_HPP
 
 #include <array>
-#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <type_traits>
@@ -124,14 +123,14 @@ struct splitting_plan {
     }
 };
 
-// The cached acceleration of a first-same-as-last method: a(t, *x), valid while *x is unchanged.
-template <class State, bool Enabled>
+// The cached acceleration of a first-same-as-last method: a(t, *x), valid while the next step starts on
+// the same position object at that time (detail::continuation, as the history-keeping steppers use).
+template <class State, bool Fsal>
 struct splitting_cache {};
 template <class State>
 struct splitting_cache<State, true> {
     State acceleration{};
-    value_type_t<State> t{};
-    const State* x = nullptr;
+    continuation<State> next{};
 };
 
 }  // namespace detail
@@ -146,9 +145,9 @@ struct splitting_cache<State, true> {
 /// First same as last (velocity Verlet, leapfrog, Blanes-Moan): the acceleration of a step's last kick,
 /// a(t + dt, x_{n+1}), is kept with that time and the address of the x it belongs to, and serves as the
 /// first kick's acceleration of the next step when that step is called with the same x object at the
-/// same time. "The same time" allows a few rounding errors, 4 eps (|t| + |dt|): `integrate` calls step n+1
-/// at t0 + (n+1) dt from its counter, which differs from the fl(t + dt) of step n in the last bit about
-/// one step in three. (For a force that depends on t, the kept value is then a at a time a few ULPs off.)
+/// same time. "The same time" allows the rounding of the run's times (detail::continuation): `integrate`
+/// calls step n+1 at t0 + (n+1) dt from its counter, which differs from the fl(t + dt) of step n in the
+/// last bits about one step in three. (For a force that depends on t, the kept value is then a at a time a few ULPs off.)
 /// Velocity Verlet thus costs one evaluation of a per step, stepping forward or back (-dt). A failed step
 /// keeps the acceleration it had. What the stepper cannot see is a change made to x between two steps,
 /// or to the force itself (a parameter of the functor, a control input): call `reset()` after changing x
@@ -196,13 +195,12 @@ public:
     /// As above; the acceleration of the last kick is kept for the next step (not when the step fails).
     template <class Accel, bool F = fsal, std::enable_if_t<F, int> = 0>
     [[nodiscard]] status step(Accel&& a, State& x, State& v, T t, T dt) {
-        const bool hit = cache_.x == &x && same_instant(t, cache_.t, dt);
+        const bool hit = cache_.next.at(t, x);
         State last;
         const status s = advance(a, x, v, t, dt, hit ? &cache_.acceleration : nullptr, &last);
         if (s == status::ok) {
-            cache_.acceleration = last;
-            cache_.t = t + dt;  // the time the last kick was evaluated at
-            cache_.x = &x;
+            cache_.acceleration = last;  // evaluated at t + dt, where the next step starts
+            cache_.next.expect(t, dt, x);
         }
         return s;
     }
@@ -210,21 +208,11 @@ public:
     /// Forgets the kept acceleration, so the next step evaluates a afresh. Call it after changing x or v
     /// outside the stepper, or the force. A no-op for the tables that keep nothing.
     constexpr void reset() noexcept {
-        if constexpr (fsal) cache_.x = nullptr;
+        if constexpr (fsal) cache_.next.clear();
     }
 
 private:
     detail::splitting_cache<State, fsal> cache_{};
-
-    // The kept acceleration belongs to time `cached`; the step asks for t. The same instant when equal,
-    // or when they differ by no more than the rounding of the times themselves: a step at t0 + i dt ends
-    // at fl(t + dt), and the next is called at fl(t0 + (i + 1) dt), which differs from it in the last bit
-    // about one time in three.
-    static bool same_instant(T t, T cached, T dt) noexcept {
-        if (t == cached) return true;
-        const T tolerance = T(4) * std::numeric_limits<T>::epsilon() * (std::fabs(t) + std::fabs(dt));
-        return std::fabs(t - cached) <= tolerance;
-    }
 
     struct work {
         State x;
