@@ -124,6 +124,50 @@ std::size_t allocations_of_multistep_calls() {
     return odestep_test::allocations() - before;
 }
 
+template <class T>
+std::size_t allocations_of_event_calls() {
+    using state2 = std::array<T, 2>;
+    using vec = std::array<T, 1>;
+    const std::size_t before = odestep_test::allocations();
+    auto fall = [](T, const state2& s) { return state2{s[1], T(-9.8)}; };
+    auto height = [](T, const state2& s) { return s[0]; };
+    auto bounce = [](T, state2& s) { s[1] = T(-0.7) * s[1]; };
+    for (std::size_t probes = 0; probes < 2; ++probes) {
+        const odestep::event_limits limits{0, 8, probes};
+        state2 s{T(1), T(0)};
+        // bounces until the event limit (a Zeno storm), then a terminal event, then bad settings, a NaN g
+        (void)odestep::integrate(odestep::rk4<state2>{}, fall, s, T(0), T(5), T(0.01),
+                                 odestep::watch(odestep::make_event<state2>(height, odestep::direction::falling, bounce))
+                                     .with_limits(limits),
+                                 [](T, const state2&) {});
+        s = {T(1), T(0)};
+        (void)odestep::integrate(odestep::rk4<state2>{}, fall, s, T(0), T(5), T(0.01),
+                                 odestep::watch(odestep::make_event<state2>(height, odestep::direction::falling)));
+        (void)odestep::integrate(odestep::rk4<state2>{}, fall, s, T(0), T(5), T(0.01),
+                                 odestep::watch(odestep::make_event<state2>(height, odestep::direction::falling)
+                                                    .with_tolerance(T(-1))));
+        auto nan_g = [](T, const state2&) { return std::numeric_limits<T>::quiet_NaN(); };
+        (void)odestep::integrate(odestep::rk4<state2>{}, fall, s, T(0), T(5), T(0.01),
+                                 odestep::watch(odestep::make_event<state2>(nan_g, odestep::direction::falling)));
+        // the per-tick stepper, Newtonian, with a multistep-free symplectic stepper
+        auto a = [](T, const vec&) { return vec{T(-9.8)}; };
+        auto ground = [](T, const vec& x, const vec&) { return x[0]; };
+        auto flip = [](T, vec&, vec& v) { v[0] = -v[0]; };
+        auto loop = odestep::make_event_stepper(
+            odestep::velocity_verlet<vec>{},
+            odestep::watch(odestep::make_event<vec>(ground, odestep::direction::falling, flip)).with_limits(limits));
+        vec x{T(1)};
+        vec v{T(0)};
+        if (loop.start(T(0), T(0.01), x, v) == odestep::status::ok)
+            for (int n = 0; n < 200; ++n) (void)loop.tick(a, x, v);
+    }
+    // the multistep restart after a state change
+    state2 s{T(1), T(0)};
+    (void)odestep::integrate(odestep::adams_bashforth_moulton4<state2>{}, fall, s, T(0), T(2), T(0.01),
+                             odestep::watch(odestep::make_event<state2>(height, odestep::direction::falling, bounce)));
+    return odestep_test::allocations() - before;
+}
+
 }  // namespace
 
 TEST_CASE("allocation: the counter sees an allocation when there is one") {
@@ -158,4 +202,10 @@ TEST_CASE("allocation: no multistep stepper allocates, in float, double or long 
     CHECK(allocations_of_multistep_calls<float>() == 0);
     CHECK(allocations_of_multistep_calls<double>() == 0);
     CHECK(allocations_of_multistep_calls<long double>() == 0);
+}
+
+TEST_CASE("allocation: the event loops do not allocate, in float, double or long double") {
+    CHECK(allocations_of_event_calls<float>() == 0);
+    CHECK(allocations_of_event_calls<double>() == 0);
+    CHECK(allocations_of_event_calls<long double>() == 0);
 }

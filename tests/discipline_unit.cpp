@@ -79,6 +79,25 @@ T run_everything() {
     add_adams(odestep::adams_bashforth4<state4<T>>{});
     add_adams(odestep::adams_bashforth5<state4<T>>{});
     add_adams(odestep::adams_bashforth_moulton4<state4<T>>{});
+    // and the event loops, with every root finder: their memory lives in the loop objects
+    auto events_with = [&](auto finder) {
+        using F = decltype(finder);
+        auto g = [](T, const state4<T>& y) { return y[0]; };
+        auto flip = [](T, state4<T>& y) { y[1] = -y[1]; };
+        state4<T> y{T(1), T(0), T(1), T(0)};
+        const auto r = odestep::integrate(odestep::rk4<state4<T>>{}, oscillators{}, y, T(0), T(4), T(0.125),
+                                          odestep::watch<F>(odestep::make_event<state4<T>>(g, odestep::direction::falling, flip)));
+        if (r.status == odestep::status::ok) sum += y[0];
+        auto loop = odestep::make_event_stepper(odestep::rk4<state4<T>>{},
+                                                odestep::watch<F>(odestep::make_event<state4<T>>(g, odestep::direction::either)));
+        if (loop.start(T(0), T(0.125), y) == odestep::status::ok && loop.tick(oscillators{}, y).status == odestep::status::ok)
+            sum += y[0];
+    };
+    events_with(odestep::bisection{});
+    events_with(odestep::illinois{});
+    events_with(odestep::anderson_bjorck{});
+    events_with(odestep::brent{});
+    events_with(odestep::itp{});
     return sum;
 }
 }  // namespace

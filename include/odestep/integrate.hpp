@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 
 #include "state.hpp"
 #include "status.hpp"
@@ -21,6 +22,12 @@ struct integrate_result {
 };
 
 namespace detail {
+
+// An event set (events.hpp) is not an observer: integrate's overloads with events are found instead.
+template <class T>
+struct is_event_set : std::false_type {};
+template <class T>
+inline constexpr bool is_observer_v = !is_event_set<std::remove_cv_t<std::remove_reference_t<T>>>::value;
 
 template <class T>
 struct identity {
@@ -123,7 +130,8 @@ using time_t_of = identity_t<value_type_t<State>>;
 ///
 /// Bad arguments return a status before anything is touched. A step that produces NaN or Inf is rolled
 /// back: y is the state at the returned time and the status says why the run stopped.
-template <class Stepper, class System, class State, class Observer>
+template <class Stepper, class System, class State, class Observer,
+          std::enable_if_t<detail::is_observer_v<Observer>, int> = 0>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate(Stepper&& stepper, System&& f, State& y,
                                                               detail::time_t_of<State> t0,
                                                               detail::time_t_of<State> t1,
@@ -162,7 +170,8 @@ template <class Stepper, class System, class State>
 
 /// Newton's equations x'' = a: the same loops for steppers that take position and velocity separately.
 /// The observer is called as observe(t, x, v).
-template <class Stepper, class Accel, class State, class Observer>
+template <class Stepper, class Accel, class State, class Observer,
+          std::enable_if_t<detail::is_observer_v<Observer>, int> = 0>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate(Stepper&& stepper, Accel&& a, State& x, State& v,
                                                               detail::time_t_of<State> t0,
                                                               detail::time_t_of<State> t1,

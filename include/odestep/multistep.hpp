@@ -298,7 +298,7 @@ private:
     template <class System>
     status starter_step(System& f, State& y, T t, T dt) {
         State next = y;
-        State fn;
+        State fn{};  // written by the recorder; zeroed so that g++ -O1 sees it initialised
         recording_system<System> recorder{f, t, static_cast<const State&>(y), fn, false};
         const status s = Starter{}.step(recorder, next, t, dt);
         if (s != status::ok) return s;

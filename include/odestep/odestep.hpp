@@ -13,5 +13,7 @@
 #include "newtonian.hpp"
 #include "symplectic.hpp"
 #include "boris.hpp"
+#include "bracket.hpp"
+#include "events.hpp"
 
 #endif

@@ -15,7 +15,11 @@ enum class [[nodiscard]] status : unsigned char {
     non_finite,       ///< a step produced NaN or Inf (from the right-hand side or by overflow); it was rolled back
     no_convergence,   ///< an iterated corrector did not meet its tolerance within its iteration cap; rolled back
     step_mismatch,    ///< a multistep method was asked for a dt, or a t, other than where its history ends; nothing touched
-    invalid_tolerance,  ///< a tolerance is zero, negative or NaN; nothing was touched
+    invalid_tolerance,  ///< a tolerance is zero, negative or NaN (for events: negative or not finite); nothing was touched
+    stopped_by_event,   ///< a terminal event fired: the state is the integrator's own state at the event's time
+    event_limit,        ///< more events fired in one step than the limit allows (a Zeno storm or chattering); the
+                        ///< state is the one after the last event that did fire, at its time
+    non_finite_event,   ///< an event function returned NaN or Inf; the state is the last one where all were finite
 };
 
 /// A short English name for logs and test output; constant storage, no allocation.
@@ -30,6 +34,9 @@ constexpr const char* to_string(status s) noexcept {
         case status::no_convergence: return "no_convergence";
         case status::step_mismatch: return "step_mismatch";
         case status::invalid_tolerance: return "invalid_tolerance";
+        case status::stopped_by_event: return "stopped_by_event";
+        case status::event_limit: return "event_limit";
+        case status::non_finite_event: return "non_finite_event";
     }
     return "unknown";
 }
