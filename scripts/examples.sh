@@ -6,7 +6,8 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh examples
 cmake --preset examples >/dev/null
 cmake --build --preset examples -j"$(nproc)"
-for example in quickstart harmonic_oscillator radioactive_decay euler_table earth_orbit pendulum kepler_orbits crossed_fields; do
+for example in quickstart harmonic_oscillator radioactive_decay euler_table earth_orbit pendulum kepler_orbits crossed_fields \
+               pebble projectile bouncing_ball coffee; do
   echo "== $example"
   "build/examples/examples/$example"
 done
