@@ -7,7 +7,9 @@
 // E. Hairer's dopri5.f and dop853.f (Y1(I) = Y(I) + H*(A31*K1(I) + A32*K2(I)) and so on, same coefficients),
 // except that they are stateless, like odestep's step: k1 is evaluated at the start of every step rather
 // than carried over from the last stage of the step before (FSAL). RKF78 is written the same way; its
-// eleventh stage feeds only the seventh-order solution, so the eighth-order step skips it.
+// eleventh stage feeds only the seventh-order solution, so the eighth-order step skips it. Velocity Verlet
+// keeps the last acceleration in a variable of the caller's (first same as last), as any hand-written
+// Verlet loop does: one evaluation of the force per step.
 #ifndef ODESTEP_BENCH_HAND_HPP
 #define ODESTEP_BENCH_HAND_HPP
 
@@ -206,6 +208,20 @@ inline void rkf78(F f, std::array<double, N>& y, double t, double h) {
     for (std::size_t i = 0; i < N; ++i)
         y[i] += h * (b6 * k6[i] + b7 * k7[i] + b8 * k8[i] + b9 * k9[i] + b10 * k10[i] + b12 * k12[i] +
                      b13 * k13[i]);
+}
+
+/// Velocity Verlet for x'' = a(x), with the acceleration at x kept between steps in `acc` (the caller sets
+/// it to a(x0) before the first step): x <- x + h v + h^2/2 a, a_new = a(x), v <- v + h/2 (a + a_new).
+/// One evaluation per step. f(t, x, acc).
+template <class T, std::size_t N, class F>
+inline void velocity_verlet(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, N>& acc, T t, T h) {
+    const T hh2 = h * h * T(0.5);
+    const T h2 = h * T(0.5);
+    for (std::size_t i = 0; i < N; ++i) x[i] += h * v[i] + hh2 * acc[i];
+    std::array<T, N> acc_new;
+    f(t + h, x, acc_new);
+    for (std::size_t i = 0; i < N; ++i) v[i] += h2 * (acc[i] + acc_new[i]);
+    acc = acc_new;
 }
 
 }  // namespace bench::hand

@@ -60,6 +60,15 @@ inline void oscillator(const In& y, Out& d) {
     d[1] = -y[0];
 }
 
+/// The planar Kepler problem with mu = 1: x'' = -x / |x|^3. A force of position alone, written into `a`.
+template <class T, class In, class Out>
+inline void kepler(const In& x, Out& a) {
+    const T r2 = x[0] * x[0] + x[1] * x[1];
+    const T s = T(1) / (r2 * std::sqrt(r2));
+    a[0] = -x[0] * s;
+    a[1] = -x[1] * s;
+}
+
 }  // namespace bench
 
 #endif

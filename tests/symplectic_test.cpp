@@ -563,6 +563,36 @@ TEST_CASE("velocity Verlet: after reset(), for another x object, or at another t
     CHECK(calls == 1);
 }
 
+TEST_CASE("velocity Verlet: after a step at an infinite time, or one whose end time overflows, the next evaluates afresh") {
+    // A force of position alone takes a step at t = +Inf without complaint. The time that step ends at is
+    // not finite, so no later time continues it (the allowance around it is not finite either).
+    std::size_t calls = 0;
+    auto none = [&calls](double, const state&) {
+        ++calls;
+        return state{0.0, 0.0};
+    };
+    const double inf = std::numeric_limits<double>::infinity();
+    const double big = std::numeric_limits<double>::max();
+    odestep::velocity_verlet<state> stepper;
+    state x{1.0, 0.0};
+    state v{0.0, 0.0};
+    REQUIRE(stepper.step(none, x, v, inf, 0.01) == odestep::status::ok);
+    calls = 0;
+    REQUIRE(stepper.step(none, x, v, 0.0, 0.01) == odestep::status::ok);
+    CHECK(calls == 2);
+    calls = 0;
+    REQUIRE(stepper.step(none, x, v, inf, 0.01) == odestep::status::ok);
+    CHECK(calls == 2);
+    calls = 0;
+    REQUIRE(stepper.step(none, x, v, big, big) == odestep::status::ok);  // ends at big + big = +Inf
+    calls = 0;
+    REQUIRE(stepper.step(none, x, v, 5.0, 0.01) == odestep::status::ok);
+    CHECK(calls == 2);
+    calls = 0;
+    REQUIRE(stepper.step(none, x, v, 5.01, 0.01) == odestep::status::ok);  // an ordinary continuation again
+    CHECK(calls == 1);
+}
+
 TEST_CASE("velocity Verlet: results with the kept acceleration are bit for bit those of a reset before every step") {
     SUBCASE("Kepler through integrate_n_steps") {
         odestep::velocity_verlet<state> kept;
