@@ -135,6 +135,24 @@ extern "C" __attribute__((noinline, used)) odestep::status audit_step_hand_rk4(s
 }
 HAND
 } > "$unit"
+# The event loop's row is compiled on its own, so that sharing step() and the system with the rows above does
+# not change how -Os inlines them there.
+event_unit=$out/event_unit.cpp
+{
+  sed -n '1,/^};/p' "$unit"
+  cat <<'EVENTS'
+// One tick of the per-tick event loop: RK4 and one event (y[0] falling through 0, recorded), the loop object
+// kept by the caller between ticks.
+struct first_coordinate {
+  AUDIT_T operator()(AUDIT_T, const state& y) const noexcept { return y[0]; }
+};
+using one_event_loop = odestep::event_stepper<odestep::rk4<state>,
+    decltype(odestep::watch(odestep::make_event<state>(first_coordinate{}, odestep::direction::falling, odestep::record)))>;
+extern "C" __attribute__((noinline, used)) odestep::status audit_step_rk4_one_event(one_event_loop& loop, state& y) {
+  return loop.tick(two_masses{}, y).status;
+}
+EVENTS
+} > "$event_unit"
 
 # measure OBJECT CALLGRAPH: prints "method text stack helpers" for every audit_step_* wrapper.
 measure() {
@@ -210,11 +228,17 @@ for core in cortex-m4f cortex-m0plus; do
         [[ -z "$doubles" ]] || fail "$tag: float steps call double-precision routines: $doubles"
         echo "$tag ${doubles:-none}" >> "$out/float-doubles.txt"
       fi
+      events_object=$out/events-$tag.o
+      if ! arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" "$opt" -DAUDIT_T="$type" -fstack-usage \
+           -fcallgraph-info=su -c "$event_unit" -o "$events_object" 2> "$out/events-$tag.log"; then
+        cat "$out/events-$tag.log" >&2
+        fail "$tag: the event unit does not compile"
+      fi
       while read -r method text stack helpers; do
         text_of[$method,$tag]=$text
         stack_of[$method,$tag]=$stack
         [[ $helpers == - ]] || helpers_seen+=" $tag:$helpers"
-      done < <(measure "$object" "${object%.o}.ci")
+      done < <(measure "$object" "${object%.o}.ci"; [[ -f "$events_object" ]] && measure "$events_object" "${events_object%.o}.ci")
     done
   done
 done
@@ -240,8 +264,13 @@ done
   printf '|---|'
   for _ in 1 2 3 4 5 6 7 8; do printf -- '---:|'; done
   echo
-  for m in $methods hand_rk4; do
-    printf '| %s |' "$([[ $m == hand_rk4 ]] && echo "rk4 by hand (no NaN check)" || echo "$m")"
+  for m in $methods hand_rk4 rk4_one_event; do
+    case $m in
+      hand_rk4) label="rk4 by hand (no NaN check)" ;;
+      rk4_one_event) label="rk4 + one event: event_stepper tick (location included)" ;;
+      *) label=$m ;;
+    esac
+    printf '| %s |' "$label"
     for core in cortex-m4f cortex-m0plus; do for type in float double; do for opt in -Os -O2; do
       tag=$core-$type$opt
       printf ' %s / %s |' "${text_of[$m,$tag]:--}" "${stack_of[$m,$tag]:--}"
