@@ -55,7 +55,7 @@ struct event {
 
     G g;
     odestep::direction direction = odestep::direction::either;
-    Action action{};
+    Action action;  // no default initializer: a capturing lambda has no default constructor (C++20)
     value_type tolerance = value_type(0);
     value_type band = value_type(0);
     value_type dead_time = value_type(0);
