@@ -107,6 +107,8 @@ TEST_CASE("events: no firing costs no right-hand-side evaluation and one g evalu
 }
 
 TEST_CASE("events: g zero at t0 does not fire; a root exactly on a step's end fires once, at that time") {
+    // Regressions reported elsewhere: an event firing on the initial state and then re-firing step after step
+    // (SciML/DiffEqBase.jl#646); a root equal to a bracket end duplicating the event time (scipy/scipy#17066).
     // y' = 1 from y = 0 with dt = 0.25: y is exact at every grid time (binary fractions).
     auto at_half = [](double, const state1& y) { return y[0] - 0.5; };
     auto at_zero = [](double, const state1& y) { return y[0]; };
@@ -124,6 +126,7 @@ TEST_CASE("events: g zero at t0 does not fire; a root exactly on a step's end fi
 }
 
 TEST_CASE("events: two roots inside one step are missed without probes and found with one") {
+    // As in scipy/scipy#9228 (two zeros skipped when the solver steps over both), made deliberate here.
     // g = (y - 0.3)(y - 0.7) along y = t: positive at both ends of the step [0, 1], negative in between.
     auto two = [](double, const state1& y) { return (y[0] - 0.3) * (y[0] - 0.7); };
     std::array<double, 4> times{};
@@ -149,6 +152,8 @@ TEST_CASE("events: two roots inside one step are missed without probes and found
 }
 
 TEST_CASE("events: a state-resetting action re-triggers every period and the grid is kept") {
+    // Re-triggering right after a state reset (SciML/DifferentialEquations.jl#590: an event repeated at the
+    // same time with fixed steps).
     // Sawtooth: y' = 1, and when y rises through 1 it is reset to 0: firings at t = 1, 2, ..., 10.
     auto top = [](double, const state1& y) { return y[0] - 1.0; };
     std::array<double, 16> times{};
@@ -210,6 +215,8 @@ TEST_CASE("events: max_firings silences an event after that many") {
 }
 
 TEST_CASE("events: the earliest event in a step wins; simultaneous ones fire in the order given") {
+    // Simultaneous events: a hang in SciML/DiffEqBase.jl#837 and #889, only the first firing in
+    // SciML/ModelingToolkit.jl#3819. Here both fire once, in order, and the run goes on.
     auto at = [](double level) { return [level](double, const state1& y) { return y[0] - level; }; };
     std::array<std::size_t, 4> order{};
     std::size_t n = 0;
