@@ -69,6 +69,16 @@ inline void kepler(const In& x, Out& a) {
     a[1] = -x[1] * s;
 }
 
+/// A pebble moving vertically against quadratic drag: y = (height, velocity), a = -g - (g / vt^2) v |v| with
+/// g = 9.8 and terminal speed vt = 30. Autonomous, 2 states. The drag term has a jump in its second
+/// derivative at v = 0 (the apex).
+template <class T, class In, class Out>
+inline void pebble(const In& y, Out& d) {
+    const T g = T(9.8), k = T(9.8) / (T(30) * T(30));
+    d[0] = y[1];
+    d[1] = -g - k * y[1] * std::fabs(y[1]);
+}
+
 }  // namespace bench
 
 #endif

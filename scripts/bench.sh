@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # odestep's benchmarks (bench/): each case is one problem stepped by odestep, by a hand-written loop, by
-# Boost.Odeint and by GSL odeiv2, measured at -O2, -O3 and -Os as
+# Boost.Odeint and by GSL odeiv2 (where they have the method; neither has event location, so the event
+# loop's case, pebble_events, has no variant of theirs), measured at -O2, -O3 and -Os as
 #   - instructions per step: valgrind --tool=callgrind, counting only inside each variant's step function
 #     (deterministic, the same on every run of the same compiler);
 #   - wall time per step: std::chrono, the variants interleaved round by round (reported, never asserted).
@@ -45,8 +46,8 @@ njobs=${JOBS:-$(nproc 2> /dev/null || echo 2)}
 rounds=${BENCH_ROUNDS:-51}
 count_steps=1000
 ratio_limit=1.05
-cases_all=(lorenz_rk4 threebody_rk4 threebody_dop853 threebody_rkf78 sho_float_rk4 lorenz_dopri5 kepler_verlet)
-# A later issue adds its case here: the event loop.
+cases_all=(lorenz_rk4 threebody_rk4 threebody_dop853 threebody_rkf78 sho_float_rk4 lorenz_dopri5 kepler_verlet
+  pebble_events)
 opts_all=(-O2 -O3 -Os)
 common_flags=(-std=c++17 -DNDEBUG -Wall -Wextra -Wdouble-promotion)
 libs=(-lgsl -lgslcblas -lm)
@@ -130,13 +131,16 @@ code_sizes() {
 }
 
 # measure <dir> <opt> <case> <time:0|1>: runs the check, the count and (if asked) the timing of one built
-# case and appends tab-separated records "<opt> KIND case variant ..." to <dir>/results.tsv.
+# case and appends tab-separated records "<opt> KIND case variant ..." to <dir>/results.tsv. A binary may
+# report more than its own case: extra stretches as cases of their own (pebble_events_quiet), single steps
+# as Callgrind dumps named "<case> <variant>@<what> 1", and EVENT records from its check (the evaluations
+# of the steps in which an event fires).
 # Returns non-zero if the check or the count failed.
 measure() {
   local dir=$1 opt=$2 name=$3 timing=$4 bin=$1/$3 status=0
   local out
   out=$("$bin" check 2>&1) || status=1
-  printf '%s\n' "$out" | grep -E '^(VARIANT|CHECK)' | sed "s/^/${opt}\t/" >> "$dir/results.tsv"
+  printf '%s\n' "$out" | grep -E '^(VARIANT|CHECK|EVENT)' | sed "s/^/${opt}\t/" >> "$dir/results.tsv"
   if ((status)); then
     echo "bench: $name $opt: the variants do not agree:" >&2
     printf '%s\n' "$out" | grep -E '^CHECK.*FAIL' >&2
@@ -328,6 +332,10 @@ EOF
     $2 == "COUNT" { ir[$1, $3, $4] = $5 }
     $2 == "TIME" { ns[$1, $3, $4] = $5; th[$1, $3, $4] = $6; to[$1, $3, $4] = $7 }
     $2 == "SIZE" { sz[$1, $3, $4] = $5 }
+    $2 == "EVENT" && !(($3 SUBSEP $4) in evseen) {
+      evseen[$3, $4] = 1; ev[++ne] = $3 SUBSEP $4
+      ev_tick[$3, $4] = $5; ev_fires[$3, $4] = $6; ev_f[$3, $4] = $7; ev_g[$3, $4] = $8; ev_re[$3, $4] = $9
+    }
     END {
       split("-O2 -O3 -Os", O, " ")
       print "## Instructions per step"
@@ -367,6 +375,7 @@ EOF
       print "|---|---|--:|--:|--:|"
       for (i = 1; i <= n; i++) {
         split(order[i], k, SUBSEP); c = k[1]; v = k[2]
+        if (sz["-O2", c, v] == "" && sz["-O3", c, v] == "" && sz["-Os", c, v] == "") continue  # an extra stretch
         print "| " c " | " v " | " sz["-O2", c, v] " | " sz["-O3", c, v] " | " sz["-Os", c, v] " |"
       }
       print ""
@@ -393,13 +402,59 @@ EOF
       print "|---|--:|--:|--:|---|"
       for (i = 1; i <= n; i++) {
         split(order[i], k, SUBSEP); c = k[1]; v = k[2]
-        if (v != "odestep" || !((c SUBSEP "odeint") in same)) continue
+        if (v != "odestep") continue
+        if (!((c SUBSEP "odeint") in same)) {
+          print "| " c " | - | - | - | n/a: no Odeint variant |"
+          continue
+        }
         if (same[c, "odeint"] != "same") {
           print "| " c " | " to["-O2", c, v] " | " to["-O3", c, v] " | " to["-Os", c, v] " | n/a: Odeint runs another method |"
           continue
         }
         met = (to["-O2", c, v] != "" && to["-O2", c, v] + 0 < 1 && to["-O3", c, v] + 0 < 1) ? "yes" : "**no**"
         print "| " c " | " to["-O2", c, v] " | " to["-O3", c, v] " | " to["-Os", c, v] " | " met " |"
+      }
+      print ""
+      if (ne == 0) exit
+      print "## The event loop"
+      print ""
+      print "Its cost per step when no event fires: the `odestep` variant (the event stepper'"'"'s tick) minus `plain`"
+      print "(the same RK4 step without events), per stretch; the `_quiet` stretch has no tick in which an event fires."
+      print "ns: the difference of the median wall times (sensitive to the machine'"'"'s load); x plain: odestep'"'"'s time"
+      print "over plain'"'"'s, from the medians of the per-round ratios to the hand loop (robust to it)."
+      print ""
+      print "| case | -O2 instructions | ns | x plain | -O3 instructions | ns | x plain | -Os instructions | ns | x plain |"
+      print "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|"
+      for (i = 1; i <= n; i++) {
+        split(order[i], k, SUBSEP); c = k[1]; v = k[2]
+        if (v != "odestep" || !((c SUBSEP "plain") in same)) continue
+        line = "| " c
+        for (j = 1; j <= 3; j++) {
+          o = O[j]
+          di = (ir[o, c, v] != "" && ir[o, c, "plain"] != "") ? fmt(ir[o, c, v] - ir[o, c, "plain"]) : "-"
+          dn = (ns[o, c, v] != "" && ns[o, c, "plain"] != "") ? sprintf("%.1f", ns[o, c, v] - ns[o, c, "plain"]) : "-"
+          dr = (th[o, c, v] != "" && th[o, c, "plain"] + 0 > 0) ? sprintf("%.2f", th[o, c, v] / th[o, c, "plain"]) : "-"
+          line = line " | " di " | " dn " | " dr
+        }
+        print line " |"
+      }
+      print ""
+      print "Single ticks of the `odestep` variant: instructions from one Callgrind dump around that tick alone;"
+      print "evaluations of the right-hand side (f) and of the event functions (g) in the same tick, counted in a"
+      print "separate run whose f and g count their calls (the same arithmetic, so the same trajectory). Re-steps:"
+      print "the trial steps from the tick'"'"'s start of the default root finder (odestep::default_root_finder);"
+      print "x quiet: the tick'"'"'s instructions over those of the quiet tick at the same -O."
+      print ""
+      print "| case | tick | fires | f evaluations | re-steps | g evaluations | -O2 | x quiet | -O3 | x quiet | -Os | x quiet |"
+      print "|---|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|"
+      for (i = 1; i <= ne; i++) {
+        split(ev[i], k, SUBSEP); c = k[1]; e = k[2]
+        line = "| " c " | " e " (" ev_tick[c, e] ") | " ev_fires[c, e] " | " ev_f[c, e] " | " ev_re[c, e] " | " ev_g[c, e]
+        for (j = 1; j <= 3; j++) {
+          o = O[j]
+          line = line " | " fmt(ir[o, c, "odestep@" e]) " | " rat(ir[o, c, "odestep@" e], ir[o, c, "odestep@quiet"])
+        }
+        print line " |"
       }
       print ""
     }' "$base/results.tsv"
@@ -412,7 +467,7 @@ EOF
   echo "oscillator) to its method's truncation error (vs_reference)."
   echo
   echo '```'
-  awk -F'\t' '$2 == "CHECK" { printf "%-4s %-17s %-12s %-5s %s\n", $1, $3, $4, $5, $6 }' "$base/results.tsv"
+  awk -F'\t' '$2 == "CHECK" { printf "%-4s %-19s %-12s %-5s %s\n", $1, $3, $4, $5, $6 }' "$base/results.tsv"
   echo '```'
   echo
   echo "## Variants"
@@ -437,8 +492,13 @@ Notes:
   per step); each run from the initial state starts them afresh (odestep reset(), the hand loop's a(x0),
   Odeint reset()). GSL odeiv2 has no velocity Verlet. The reference is the closed-form Kepler orbit.
 - Where odestep misses a target, and why: bench/README.md, "Known gaps".
-- Not measured yet: the event loop (a later issue; its case goes in bench/ and in the case list of
-  scripts/bench.sh).
+- pebble_events: the event loop, an event stepper's tick (RK4 and two record events: apex and ground)
+  against the same RK4 step alone (plain) and a hand loop that tests for a sign change at the step's end
+  without locating it. Neither Odeint nor GSL odeiv2 locates events: no variant of theirs. The stretch
+  pebble_events (1000 steps) has the apex and the ground in 2 of its ticks, pebble_events_quiet (the first
+  300 steps) none. The check also requires odestep's state to equal plain's bit for bit, the event times
+  from the ticks' reports to match the closed forms, and a tick in which nothing fires to cost no more than
+  the step's 4 evaluations of f and one of each g.
 EOF
 } > "$root/bench/RESULTS.md"
 
