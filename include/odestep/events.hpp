@@ -200,7 +200,7 @@ struct event_integrate_result {
 
 /// What one tick of an event_stepper reports: the status (ok, stopped_by_event, event_limit, or an error),
 /// the time of the state now (the tick's end unless the tick stopped early), and the firings inside the tick
-/// (the first Capacity of them are listed; `fired` counts them all).
+/// (the first Capacity of them are listed; `fired` counts them all; entries past those are not written).
 template <class T, std::size_t Capacity>
 struct tick_result {
     odestep::status status;
@@ -224,14 +224,12 @@ constexpr void reset_if_any(S& s) noexcept {
 
 template <class T>
 constexpr bool crosses(direction d, T before, T after) noexcept {
-    const bool falls = before > T(0) && after <= T(0);
-    const bool rises = before < T(0) && after >= T(0);
     switch (d) {
-        case direction::falling: return falls;
-        case direction::rising: return rises;
-        case direction::either: return falls || rises;
+        case direction::falling: return before > T(0) && after <= T(0);
+        case direction::rising: return before < T(0) && after >= T(0);
+        case direction::either: break;
     }
-    return false;
+    return (before > T(0) && after <= T(0)) || (before < T(0) && after >= T(0));
 }
 
 // What the loop remembers of each event between evaluation points.
@@ -328,6 +326,14 @@ public:
                 store(y, start);
                 t_out = t_s;
                 return status::non_finite_event;
+            }
+            // The common case, nothing crossed and no probes: remember the values and go on.
+            if (pieces == 1 && !any_crossing(set, g_end)) {
+                for (std::size_t i = 0; i < E; ++i) memory[i].g = g_end[i];
+                rearm(set, t_end, g_end);
+                if (partial) reset_if_any(stepper);
+                t_out = t_end;
+                return status::ok;
             }
             // Scan (0, h] piece by piece (the pieces end at the probes and at h). lo is where the events'
             // memory was last updated; lo_state the state there.
@@ -518,14 +524,19 @@ private:
         return d;
     }
 
+    // Event i (a run-time index) has crossed zero in its direction between its memory and g_now.
     bool crossed(const set_type& set, std::size_t i, T g_now) const {
         return memory[i].armed && crosses(direction_of(set, i), memory[i].g, g_now);
     }
 
+    // Any event crossed (the quiet step's one test: compile-time indices, each event's own direction).
     bool any_crossing(const set_type& set, const values& g) const {
-        for (std::size_t i = 0; i < E; ++i)
-            if (crossed(set, i, g[i])) return true;
-        return false;
+        bool any = false;
+        for_each(set, [&](auto index, const auto& e) {
+            constexpr std::size_t i = decltype(index)::value;
+            any = any || (memory[i].armed && crosses(e.direction, memory[i].g, g[i]));
+        });
+        return any;
     }
 
     // Arms the events that may fire again: g seen beyond the band, the dead time over, firings left.
@@ -611,7 +622,7 @@ private:
         for_each(set, [&](auto index, auto& e) {
             constexpr std::size_t i = decltype(index)::value;
             if (stop_index != no_event || limited) return;
-            if (!crossed(set, i, g_b[i])) return;
+            if (!(memory[i].armed && crosses(e.direction, memory[i].g, g_b[i]))) return;
             if (fired_here >= set.limits.max_firings_per_step) {
                 limited = true;
                 return;
@@ -816,7 +827,11 @@ public:
     [[nodiscard]] tick_result<value_type, Capacity> tick(System&& f, States&... y) {
         static_assert(sizeof...(States) == arity, "odestep: tick(f, y) (Newtonian: tick(a, x, v))");
         using T = value_type;
-        tick_result<T, Capacity> r{status::ok, time(), 0, no_event, {}};
+        tick_result<T, Capacity> r;  // firings past `fired` stay unwritten: clearing them cost most of a quiet tick
+        r.status = status::ok;
+        r.t = time();
+        r.fired = 0;
+        r.event = no_event;
         if (!started_) {
             r.status = status::invalid_time;
             return r;
