@@ -138,6 +138,14 @@ constexpr std::size_t secant_family_worst_case(T width, T tol) noexcept {
     return 2 * n + 2;
 }
 
+// What Illinois, Anderson-Bjorck and Brent share: the pace rule's worst case.
+struct paced_secant_family {
+    template <class T>
+    static constexpr std::size_t worst_case_evaluations(T width, T tol) noexcept {
+        return secant_family_worst_case(width, tol);
+    }
+};
+
 template <class T>
 struct bisection_rule {
     static constexpr bool paced = false;
@@ -333,12 +341,7 @@ struct bisection {
 /// same side as the one before (Dowell & Jarratt, "A modified regula falsi method for computing the root
 /// of an equation", BIT 11 (1971) 168-174; order 3^(1/3) ~ 1.44 per call at a simple root). Safeguarded:
 /// at most 2 n + 2 calls, n = bisection's count.
-struct illinois {
-    template <class T>
-    static constexpr std::size_t worst_case_evaluations(T width, T tol) noexcept {
-        return detail::secant_family_worst_case(width, tol);
-    }
-
+struct illinois : detail::paced_secant_family {
     template <class T, class F>
     [[nodiscard]] static constexpr root_bracket<T> narrow(F&& f, T a, T fa, T b, T fb, T tol, std::size_t cap) noexcept(
         detail::nothrow_bracket_call_v<T, F>) {
@@ -350,12 +353,7 @@ struct illinois {
 /// point) (1/2 when m <= 0), which is what makes the next secant land near the root on a smooth function
 /// (Anderson & Bjorck, "A new high order method of regula falsi type for computing a root of an
 /// equation", BIT 13 (1973) 253-264). Safeguarded: at most 2 n + 2 calls, n = bisection's count.
-struct anderson_bjorck {
-    template <class T>
-    static constexpr std::size_t worst_case_evaluations(T width, T tol) noexcept {
-        return detail::secant_family_worst_case(width, tol);
-    }
-
+struct anderson_bjorck : detail::paced_secant_family {
     template <class T, class F>
     [[nodiscard]] static constexpr root_bracket<T> narrow(F&& f, T a, T fa, T b, T fb, T tol, std::size_t cap) noexcept(
         detail::nothrow_bracket_call_v<T, F>) {
@@ -367,12 +365,7 @@ struct anderson_bjorck {
 /// (R. P. Brent, "Algorithms for Minimization without Derivatives", Prentice-Hall 1973, chapter 4,
 /// procedure zero). Brent's test alone allows about n^2 calls; with the loop's pace rule at most
 /// 2 n + 2, n = bisection's count.
-struct brent {
-    template <class T>
-    static constexpr std::size_t worst_case_evaluations(T width, T tol) noexcept {
-        return detail::secant_family_worst_case(width, tol);
-    }
-
+struct brent : detail::paced_secant_family {
     template <class T, class F>
     [[nodiscard]] static constexpr root_bracket<T> narrow(F&& f, T a, T fa, T b, T fb, T tol, std::size_t cap) noexcept(
         detail::nothrow_bracket_call_v<T, F>) {
