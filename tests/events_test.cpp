@@ -535,3 +535,25 @@ TEST_CASE("events: an action that moves the state onto or across another event's
         CHECK(T[0] == set_to);
     }
 }
+
+TEST_CASE("events: a NaN from the right-hand side, in a step or in a re-step, is non_finite with the last good state") {
+    auto g = [](double, const state1& y) { return y[0] - 0.6; };
+    const auto ev = odestep::make_event<state1>(g, odestep::direction::rising);
+    // In the step itself: f is NaN beyond y = 0.55, so the step from 0.5 to 0.75 fails and is rolled back.
+    auto nan_above = [](double, const state1& y) { return state1{y[0] > 0.55 ? std::numeric_limits<double>::quiet_NaN() : 1.0}; };
+    state1 y{0.0};
+    auto r = odestep::integrate(odestep::rk4<state1>{}, nan_above, y, 0.0, 1.0, 0.25, odestep::watch(ev));
+    CHECK(r.status == odestep::status::non_finite);
+    CHECK(r.t == 0.5);
+    CHECK(y[0] == 0.5);
+    // Only in a re-step: f is NaN for t in (0.52, 0.58), a time the step's stages (0.5, 0.625, 0.75) never
+    // reach but the location's first re-step (to about t = 0.6, its midpoint stage near 0.55) does.
+    auto nan_between = [](double t, const state1&) {
+        return state1{t > 0.52 && t < 0.58 ? std::numeric_limits<double>::quiet_NaN() : 1.0};
+    };
+    y = {0.0};
+    r = odestep::integrate(odestep::rk4<state1>{}, nan_between, y, 0.0, 1.0, 0.25, odestep::watch(ev));
+    CHECK(r.status == odestep::status::non_finite);
+    CHECK(r.t == 0.5);
+    CHECK(y[0] == 0.5);
+}
