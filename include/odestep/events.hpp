@@ -507,20 +507,24 @@ private:
         return finite;
     }
 
-    // g of event i (a run-time index) at (t, y).
+    // fn(event) for event i, a run-time index: the one place that turns an index into an event's type.
+    template <class Set, class Fn>
+    static void visit(Set& set, std::size_t i, Fn&& fn) {
+        for_each(set, [&](auto index, auto& e) {
+            if (decltype(index)::value == i) fn(e);
+        });
+    }
+
+    // g of event i at (t, y).
     static T evaluate_one(set_type& set, std::size_t i, T t, const refs& y) {
         T value = T(0);
-        for_each(set, [&](auto index, auto& e) {
-            if (decltype(index)::value == i) value = call_g<State>(e.g, t, y, seq{});
-        });
+        visit(set, i, [&](auto& e) { value = call_g<State>(e.g, t, y, seq{}); });
         return value;
     }
 
     static direction direction_of(const set_type& set, std::size_t i) {
         direction d = direction::either;
-        for_each(set, [&](auto index, const auto& e) {
-            if (decltype(index)::value == i) d = e.direction;
-        });
+        visit(set, i, [&](const auto& e) { d = e.direction; });
         return d;
     }
 
@@ -578,9 +582,7 @@ private:
                 continue;
             }
             T tolerance = T(0);
-            for_each(set, [&](auto index, const auto& e) {
-                if (decltype(index)::value == c) tolerance = e.tolerance;
-            });
+            visit(set, c, [&](const auto& e) { tolerance = e.tolerance; });
             tolerance = max_value(tolerance, default_tolerance);
             pack new_a = lo_state;
             pack new_b = b_state;
