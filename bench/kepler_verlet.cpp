@@ -44,10 +44,12 @@ constexpr auto hand_force = [](double, const vec& x, vec& a) { bench::kepler<dou
 constexpr auto odeint_force = [](const vec& x, const vec&, vec& a, double) { bench::kepler<double>(x, a); };
 
 odestep::velocity_verlet<vec> odestep_vv;
-vec hand_acc;  // the hand loop's kept acceleration, a(x) of the current x
+vec odestep_acc;  // odestep's explicit form: the caller keeps a(t, x), as the hand loop does
+vec hand_acc;     // the hand loop's kept acceleration, a(x) of the current x
 boost::numeric::odeint::velocity_verlet<vec> odeint_vv;
 
-void start_odestep(const State&, double) { odestep_vv.reset(); }
+void start_odestep(const State& y0, double t0) { odestep_acc = force(t0, y0.first); }
+void start_odestep_kept(const State&, double) { odestep_vv.reset(); }
 void start_hand(const State& y0, double t0) { hand_force(t0, y0.first, hand_acc); }
 void start_odeint(const State&, double) { odeint_vv.reset(); }
 
@@ -66,6 +68,9 @@ State kepler_exact(long double e, long double t) {
 }  // namespace
 
 BENCH_STEP int bench_step_kepler_verlet_odestep(State& y, State&, double t, double dt) {
+    return static_cast<int>(odestep_vv.step(force, y.first, y.second, odestep_acc, t, dt));
+}
+BENCH_STEP int bench_step_kepler_verlet_odestep_kept(State& y, State&, double t, double dt) {
     return static_cast<int>(odestep_vv.step(force, y.first, y.second, t, dt));
 }
 BENCH_STEP int bench_step_kepler_verlet_hand(State& y, State&, double t, double dt) {
@@ -94,8 +99,10 @@ int main(int argc, char** argv) {
                             5e-4, false};
     return bench::main<State>(
         argc, argv, p,
-        {{"odestep", "odestep::velocity_verlet<std::array<double, 2>> step(a, x, v, t, dt)",
+        {{"odestep", "odestep::velocity_verlet<std::array<double, 2>> step(a, x, v, acc, t, dt), acc kept by the caller",
           bench_step_kepler_verlet_odestep, true, start_odestep},
+         {"odestep_kept", "the same stepper's step(a, x, v, t, dt), acc kept and checked by the stepper",
+          bench_step_kepler_verlet_odestep_kept, true, start_odestep_kept},
          {"hand", "hand-written velocity Verlet loop, acceleration kept", bench_step_kepler_verlet_hand, true,
           start_hand},
          {"odeint", "Odeint velocity_verlet<std::array<double, 2>> do_step on std::pair (x, v)",

@@ -832,3 +832,107 @@ TEST_CASE("velocity Verlet keeps its acceleration far from t = 0 too: 20000 step
     REQUIRE(odestep::integrate_n_steps(stepper, spring, x, v, -1000.0, 0.1, 20000).status == odestep::status::ok);
     CHECK(calls == 20001);
 }
+
+// ---------------------------------------------------------------------------------------------------------
+// First same as last, the acceleration kept by the caller: step(a, x, v, acc, t, dt)
+
+namespace {
+template <class S, class = void>
+struct has_caller_acceleration_step : std::false_type {};
+template <class S>
+struct has_caller_acceleration_step<
+    S, std::void_t<decltype(std::declval<const S&>().step(kepler{}, std::declval<state&>(), std::declval<state&>(),
+                                                         std::declval<state&>(), 0.0, 0.0))>> : std::true_type {};
+}  // namespace
+
+TEST_CASE("the caller-kept acceleration form exists exactly for the first-same-as-last tables, and is const") {
+    for_each_method([](auto method) {
+        using M = decltype(method);
+        INFO(doctest::String(M::name));
+        CHECK(has_caller_acceleration_step<stepper_of<M>>::value == published<M>().fsal);
+    });
+}
+
+TEST_CASE("velocity Verlet, caller's acceleration: exact under a constant force, and acc is a(t + dt, x) after each step") {
+    // x'' = -g: velocity Verlet is exact for a constant acceleration (x1 = x0 + v0 h - g h^2/2 and
+    // v1 = v0 - g h are its own formulas), so after n steps x = x0 + v0 t - g t^2/2 and v = v0 - g t,
+    // t = n h, to rounding. Numbers chosen so that every intermediate is a dyadic rational: exact.
+    using S = std::array<double, 1>;
+    const double g = 9.75;  // 39/4
+    std::size_t calls = 0;
+    auto gravity = [&calls, g](double, const S&) {
+        ++calls;
+        return S{-g};
+    };
+    const odestep::velocity_verlet<S> stepper;  // const: the caller keeps everything
+    S x{100.0};
+    S v{12.5};
+    S acc{-g};  // a(t0, x0), evaluated by the caller
+    const double h = 0.125;
+    for (int n = 1; n <= 64; ++n) {
+        REQUIRE(stepper.step(gravity, x, v, acc, (n - 1) * h, h) == odestep::status::ok);
+        const double t = n * h;
+        CHECK(x[0] == 100.0 + 12.5 * t - g * t * t / 2.0);
+        CHECK(v[0] == 12.5 - g * t);
+        CHECK(acc[0] == -g);
+    }
+    CHECK(calls == 64);  // one evaluation per step, the first step included (acc came from the caller)
+}
+
+TEST_CASE("the caller-kept form takes, bit for bit, the kept form's steps: velocity Verlet and Blanes-Moan on Kepler") {
+    auto check = [](auto kept, auto per_step_evals) {
+        using stepper_type = decltype(kept);
+        std::size_t calls = 0;
+        counting_kepler a{&calls};
+        const stepper_type explicit_form{};
+        state x = perihelion_x<double>(), v = perihelion_v<double>();
+        state y = x, w = v;
+        state acc = kepler{}(0.0, y);  // a(t0, x0), not counted
+        const double dt = 2 * pi / 500;
+        for (int i = 0; i < 250; ++i) {  // half an orbit
+            REQUIRE(kept.step(a, x, v, i * dt, dt) == odestep::status::ok);
+            REQUIRE(explicit_form.step(a, y, w, acc, i * dt, dt) == odestep::status::ok);
+            REQUIRE(same_bits(x, y));
+            REQUIRE(same_bits(v, w));
+            // acc is the force at the new position (an independent evaluation)
+            REQUIRE(same_bits(acc, kepler{}(0.0, y)));
+        }
+        // the kept form: per_step + 1 on its first step; the caller's form: per_step every step
+        CHECK(calls == (per_step_evals + 1) + 249 * per_step_evals + 250 * per_step_evals);
+        // at aphelion, to the method's error (velocity Verlet: 2.7e-4 measured by the bench case with 1000
+        // steps per orbit, so about 4 times that with 500 (order 2); Blanes-Moan far below)
+        CHECK(max_error(y, w, aphelion_x<double>(), aphelion_v<double>()) < 2e-3);
+    };
+    check(odestep::velocity_verlet<state>{}, std::size_t{1});
+    check(odestep::blanes_moan4<state>{}, std::size_t{6});
+}
+
+TEST_CASE("the caller-kept form: a NaN from any evaluation, or an overflow, leaves x, v and acc exactly as they were") {
+    auto check = [](auto stepper, std::size_t per_step) {
+        for (std::size_t poisoned = 1; poisoned <= per_step; ++poisoned) {
+            std::size_t calls = 0;
+            auto a = [&calls, poisoned](double t, const state& x) {
+                ++calls;
+                return calls == poisoned ? state{x[0], qnan} : kepler{}(t, x);
+            };
+            state x = perihelion_x<double>(), v = perihelion_v<double>();
+            state acc = kepler{}(0.0, x);
+            const state x0 = x, v0 = v, acc0 = acc;
+            INFO("evaluation ", poisoned);
+            CHECK(stepper.step(a, x, v, acc, 0.0, 0.01) == odestep::status::non_finite);
+            CHECK(same_bits(x, x0));
+            CHECK(same_bits(v, v0));
+            CHECK(same_bits(acc, acc0));
+        }
+        // No force; the drift x + dt v overflows to Inf.
+        auto none = [](double, const state&) { return state{0.0, 0.0}; };
+        state x{1e308, 0.0}, v{1e308, 1.0}, acc{0.0, 0.0};
+        const state x0 = x, v0 = v, acc0 = acc;
+        CHECK(stepper.step(none, x, v, acc, 0.0, 10.0) == odestep::status::non_finite);
+        CHECK(same_bits(x, x0));
+        CHECK(same_bits(v, v0));
+        CHECK(same_bits(acc, acc0));
+    };
+    check(odestep::velocity_verlet<state>{}, 1);
+    check(odestep::blanes_moan4<state>{}, 6);
+}

@@ -125,22 +125,35 @@ struct continuation {
     constexpr bool matches(T t_now, T dt_now, const State& x_now) const noexcept {
         return dt == dt_now && at(t_now, x_now);
     }
-    /// After a step from t_now by dt_now on x_now: the next is expected at t_now + dt_now.
+    /// After a step from t_now by dt_now on x_now: the next is expected at t_now + dt_now. A step that did
+    /// not match (another time, dt or position object) starts a fresh history there.
     constexpr void expect(T t_now, T dt_now, const State& x_now) noexcept {
-        expect(t_now, dt_now, x_now, at(t_now, x_now));
+        if (!matches(t_now, dt_now, x_now)) {
+            t_start = t_now;
+            x = &x_now;
+        }
+        expect_next(t_now, dt_now);
     }
-    /// The same, for a caller that asked at(t_now, x_now) before the step (`was_at`, its answer, which
-    /// nothing has changed since): saves asking again.
+    /// The same, for a caller that keeps a value of x alone (a(t, x), which does not depend on dt) and
+    /// asked at(t_now, x_now) before the step (`was_at`, its answer, which nothing has changed since): a hit
+    /// continues the history whatever the dt (its t_start, the time the allowance is measured from, stays;
+    /// a new dt can only make the allowance smaller than the rounding of a counter restarted at the change,
+    /// and a miss costs an evaluation, never a wrong value), a miss starts a fresh one.
     constexpr void expect(T t_now, T dt_now, const State& x_now, bool was_at) noexcept {
-        if (!(was_at && dt == dt_now)) t_start = t_now;  // not matches(): a fresh history starts here
-        const T next = t_now + dt_now;
-        t = next - next + next;  // next when finite (a zero's sign aside); Inf - Inf is NaN
-        dt = dt_now;
-        x = &x_now;
+        if (!was_at) {
+            t_start = t_now;
+            x = &x_now;
+        }
+        expect_next(t_now, dt_now);
     }
     constexpr void clear() noexcept { x = nullptr; }
 
 private:
+    constexpr void expect_next(T t_now, T dt_now) noexcept {
+        const T next = t_now + dt_now;
+        t = next - next + next;  // next when finite (a zero's sign aside); Inf - Inf is NaN
+        dt = dt_now;
+    }
     // t_now within the allowance of t (which is finite or NaN).
     constexpr bool near(T t_now) const noexcept {
         const T s = T(8) * std::numeric_limits<T>::epsilon() * (magnitude(t) + magnitude(dt) + magnitude(t_start));

@@ -81,12 +81,24 @@ constexpr bool finite_sum(T sum) noexcept {
     return d == d;  // one compare and one branch on unordered; no zero constant
 }
 
-/// The exact test, component by component (x_i * 0 is zero exactly when x_i is finite).
+/// The exact test, component by component (y_i * 0 is +-0 exactly when y_i is finite, NaN otherwise).
+/// Optimizing for size, the products are summed without a branch (zero exactly when every y_i is
+/// finite), unrolled and inlined: this is the slow path after a failed finite_sum, and as a call it
+/// would make every value live across it spill to the stack on the hot path too.
 template <class T, std::size_t N>
-constexpr bool each_finite(const std::array<T, N>& y) noexcept {
-    for (std::size_t n = 0; n < N; ++n)
-        if (!is_finite(y[n])) return false;
-    return true;
+ODESTEP_INLINE constexpr bool each_finite(const std::array<T, N>& y) noexcept {
+    if constexpr (optimizing_for_size) {
+        T zeros = T(0);
+#if defined(__GNUC__) || defined(__clang__)
+#pragma GCC unroll 16
+#endif
+        for (std::size_t n = 0; n < N; ++n) zeros += y[n] * T(0);
+        return zeros == T(0);
+    } else {
+        for (std::size_t n = 0; n < N; ++n)
+            if (!is_finite(y[n])) return false;
+        return true;
+    }
 }
 
 /// True when every component is finite. The hot path is the plain sum of the components (finite_sum);

@@ -196,12 +196,31 @@ public:
     template <class Accel, bool F = fsal, std::enable_if_t<F, int> = 0>
     [[nodiscard]] status step(Accel&& a, State& x, State& v, T t, T dt) {
         const bool hit = cache_.next.at(t, x);
+        if (!hit) {
+            cache_.next.clear();  // until a step succeeds, the kept value belongs to no step
+            cache_.acceleration = detail::acceleration(a, t, x);
+        }
         State last;
-        const status s = advance(a, x, v, t, dt, hit ? &cache_.acceleration : nullptr, &last);
+        const status s = advance(a, x, v, t, dt, &cache_.acceleration, &last);
         if (s == status::ok) {
-            cache_.acceleration = last;  // evaluated at t + dt, where the next step starts
+            assign(cache_.acceleration, last);  // evaluated at t + dt, where the next step starts
             cache_.next.expect(t, dt, x, hit);
         }
+        return s;
+    }
+
+    /// The first-same-as-last step for a caller who keeps the acceleration, as a hand-written loop does:
+    /// on entry `acc` is a(t, x) (evaluate it once, `acc = a(t0, x0)`, before the first step; again after
+    /// changing x outside the stepper); on status::ok it is a(t + dt, x) of the new x, the next step's
+    /// entry value. The stepper keeps and checks nothing, so this form has no continuation test: one
+    /// evaluation of a per step, always, and the step is const (one stepper serves any number of states).
+    /// On status::non_finite x, v and acc are left exactly as they were. acc is an object of its own (not
+    /// x or v).
+    template <class Accel, bool F = fsal, std::enable_if_t<F, int> = 0>
+    [[nodiscard]] status step(Accel&& a, State& x, State& v, State& acc, T t, T dt) const {
+        State last;
+        const status s = advance(a, x, v, t, dt, &acc, &last);
+        if (s == status::ok) assign(acc, last);
         return s;
     }
 
@@ -214,63 +233,61 @@ public:
 private:
     detail::splitting_cache<State, fsal> cache_{};
 
-    struct work {
-        State x;
-        State v;
-    };
-
     // The step: the splitting of x' = v, v' = a(t, x) into the drift (x' = v, v' = 0) and the kick (x' = 0,
     // v' = a(t, x)), each solved exactly, applied in the table's order with its coefficients times dt (see
     // splitting_table), on copies of x and v that replace them only when every component is finite.
     template <class Accel>
-    static status advance(Accel& a, State& x, State& v, T t, T dt, const State* cached, State* last) {
-        work w{x, v};
-        run(a, w, t, dt, cached, last, std::make_index_sequence<plan::updates>{});
+    ODESTEP_INLINE static status advance(Accel& a, State& x, State& v, T t, T dt, const State* cached, State* last) {
+        // Two objects, not one struct: the force sees the position's address, and a velocity in the same
+        // object would then have to be stored before, and reloaded after, every evaluation not inlined.
+        State wx = x;
+        State wv = v;
+        run(a, wx, wv, t, dt, cached, last, std::make_index_sequence<plan::updates>{});
         // The finiteness test's sum (detail::finite_sum) of the new x and v, x's components first: any order
         // serves (only a sum that fails goes on to the exact test), and this one needs the fewest register
         // copies where the force has just taken x apart.
         T total = -T(0);  // x + (-0) is x, exactly: the compiler drops that first addition
         ODESTEP_UNROLL
-        for (std::size_t n = 0; n < N; ++n) total += w.x[n];
+        for (std::size_t n = 0; n < N; ++n) total += wx[n];
         ODESTEP_UNROLL
-        for (std::size_t n = 0; n < N; ++n) total += w.v[n];
-        if (!detail::finite_sum(total) && !(detail::each_finite(w.x) && detail::each_finite(w.v)))
+        for (std::size_t n = 0; n < N; ++n) total += wv[n];
+        if (!detail::finite_sum(total) && !(detail::each_finite(wx) && detail::each_finite(wv)))
             return status::non_finite;
-        assign(x, w.x);
-        assign(v, w.v);
+        assign(x, wx);
+        assign(v, wv);
         return status::ok;
     }
 
     template <class Accel, std::size_t... K>
-    static void run(Accel& a, work& w, T t, T dt, const State* cached, State* last, std::index_sequence<K...>) {
-        (update<K>(a, w, t, dt, cached, last), ...);
+    ODESTEP_INLINE static void run(Accel& a, State& wx, State& wv, T t, T dt, const State* cached, State* last, std::index_sequence<K...>) {
+        (update<K>(a, wx, wv, t, dt, cached, last), ...);
     }
 
     // Update K of the sequence, emitted only when its coefficient is not zero.
     template <std::size_t K, class Accel>
-    static void update(Accel& a, work& w, T t, T dt, const State* cached, State* last) {
+    ODESTEP_INLINE static void update(Accel& a, State& wx, State& wv, T t, T dt, const State* cached, State* last) {
         constexpr T c = plan::coefficient(K);
         if constexpr (c != T(0)) {
             const T h = scaled<K>(dt);
             if constexpr (!plan::is_kick(K)) {
                 ODESTEP_UNROLL
-                for (std::size_t n = 0; n < N; ++n) w.x[n] = w.x[n] + h * w.v[n];
+                for (std::size_t n = 0; n < N; ++n) wx[n] = wx[n] + h * wv[n];
             } else if constexpr (fsal && K == plan::first) {
                 if (cached != nullptr) {
-                    kick(w.v, *cached, h);
+                    kick(wv, *cached, h);
                 } else {
-                    kick(w.v, detail::acceleration(a, t, w.x), h);
+                    kick(wv, detail::acceleration(a, t, wx), h);
                 }
             } else if constexpr (fsal && K == plan::last) {
-                *last = detail::acceleration(a, t + dt, w.x);  // at x_{n+1}: kept for the next step
-                kick(w.v, *last, h);
+                *last = detail::acceleration(a, t + dt, wx);  // at x_{n+1}: kept for the next step
+                kick(wv, *last, h);
             } else {
-                kick(w.v, detail::acceleration(a, kick_time<K>(t, dt), w.x), h);
+                kick(wv, detail::acceleration(a, kick_time<K>(t, dt), wx), h);
             }
         }
     }
 
-    static void kick(State& v, const State& acc, T h) noexcept {
+    ODESTEP_INLINE static void kick(State& v, const State& acc, T h) noexcept {
         ODESTEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) v[n] = v[n] + h * acc[n];
     }
@@ -299,7 +316,7 @@ private:
     }
 
     // Component by component, as explicit_rk does (a small array assigned whole can become an integer move).
-    static void assign(State& to, const State& from) noexcept {
+    ODESTEP_INLINE static void assign(State& to, const State& from) noexcept {
         ODESTEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) to[n] = from[n];
     }
