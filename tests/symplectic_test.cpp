@@ -936,3 +936,34 @@ TEST_CASE("the caller-kept form: a NaN from any evaluation, or an overflow, leav
     check(odestep::velocity_verlet<state>{}, 1);
     check(odestep::blanes_moan4<state>{}, 6);
 }
+
+TEST_CASE("a step ending with a drift tests x alone: a velocity gone non-finite in the last kick still fails the step") {
+    // Euler-Cromer, position Verlet, Forest-Ruth and Yoshida end with x <- x + h v: a v of +-Inf or NaN
+    // makes that x non-finite (IEEE 754: finite + +-Inf is +-Inf, 0 * Inf is NaN), so the step's
+    // finiteness test looks at x only. Each case below makes v non-finite and x's own arithmetic finite.
+    const double inf = std::numeric_limits<double>::infinity();
+    auto huge = [](double, const state&) { return state{1e308, -1e308}; };      // v overflows with dt = 10
+    auto infinite = [inf](double, const state&) { return state{inf, 0.0}; };   // Inf from the force
+    auto not_a_number = [](double, const state&) { return state{0.0, qnan}; };
+    auto check = [&](auto stepper, const char* name) {
+        INFO(name);
+        static_assert(!decltype(stepper)::first_same_as_last);
+        auto run = [&](auto force, double dt) {
+            state x{1.0, 2.0};
+            state v{1e308, -1e308};
+            const state x0 = x, v0 = v;
+            CHECK(stepper.step(force, x, v, 0.0, dt) == odestep::status::non_finite);
+            CHECK(same_bits(x, x0));
+            CHECK(same_bits(v, v0));
+        };
+        run(huge, 10.0);
+        run(infinite, 0.5);
+        run(infinite, 0.0);  // h = 0: v + 0 Inf is NaN, x + 0 NaN is NaN
+        run(not_a_number, 0.5);
+        run(not_a_number, 1e-320);  // h v underflows for every finite v; NaN stays NaN
+    };
+    check(odestep::euler_cromer<state>{}, "Euler-Cromer");
+    check(odestep::position_verlet<state>{}, "position Verlet");
+    check(odestep::forest_ruth<state>{}, "Forest-Ruth");
+    check(odestep::yoshida6<state>{}, "Yoshida 6");
+}

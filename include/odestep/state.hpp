@@ -3,6 +3,7 @@
 #define ODESTEP_STATE_HPP
 
 #include <array>
+#include <limits>
 #include <cstddef>
 #include <type_traits>
 
@@ -94,8 +95,9 @@ ODESTEP_INLINE constexpr bool each_finite(const std::array<T, N>& y) noexcept {
         for (std::size_t n = 0; n < N; ++n) zeros += y[n] * T(0);
         return zeros == T(0);
     } else {
+        constexpr T largest = std::numeric_limits<T>::max();
         for (std::size_t n = 0; n < N; ++n)
-            if (!is_finite(y[n])) return false;
+            if (!(y[n] >= -largest && y[n] <= largest)) return false;
         return true;
     }
 }
