@@ -125,35 +125,24 @@ struct continuation {
     constexpr bool matches(T t_now, T dt_now, const State& x_now) const noexcept {
         return dt == dt_now && at(t_now, x_now);
     }
-    /// After a step from t_now by dt_now on x_now: the next is expected at t_now + dt_now. A step that did
-    /// not match (another time, dt or position object) starts a fresh history there.
-    constexpr void expect(T t_now, T dt_now, const State& x_now) noexcept {
-        if (!matches(t_now, dt_now, x_now)) {
+    /// After a step from t_now by dt_now on x_now: the next is expected at t_now + dt_now. `continued` is
+    /// the caller's answer before the step (matches() for a history on a grid, at() for a value of x alone,
+    /// a(t, x), which does not depend on dt), which nothing has changed since. A step that did not continue
+    /// starts a fresh history here; one that did keeps its t_start, the time the allowance is measured from
+    /// (for an at() caller whatever the dt: a new dt can only make the allowance smaller than the rounding
+    /// of a counter restarted at the change, and a miss costs an evaluation, never a wrong value).
+    constexpr void expect(T t_now, T dt_now, const State& x_now, bool continued) noexcept {
+        if (!continued) {
             t_start = t_now;
             x = &x_now;
         }
-        expect_next(t_now, dt_now);
-    }
-    /// The same, for a caller that keeps a value of x alone (a(t, x), which does not depend on dt) and
-    /// asked at(t_now, x_now) before the step (`was_at`, its answer, which nothing has changed since): a hit
-    /// continues the history whatever the dt (its t_start, the time the allowance is measured from, stays;
-    /// a new dt can only make the allowance smaller than the rounding of a counter restarted at the change,
-    /// and a miss costs an evaluation, never a wrong value), a miss starts a fresh one.
-    constexpr void expect(T t_now, T dt_now, const State& x_now, bool was_at) noexcept {
-        if (!was_at) {
-            t_start = t_now;
-            x = &x_now;
-        }
-        expect_next(t_now, dt_now);
-    }
-    constexpr void clear() noexcept { x = nullptr; }
-
-private:
-    constexpr void expect_next(T t_now, T dt_now) noexcept {
         const T next = t_now + dt_now;
         t = next - next + next;  // next when finite (a zero's sign aside); Inf - Inf is NaN
         dt = dt_now;
     }
+    constexpr void clear() noexcept { x = nullptr; }
+
+private:
     // t_now within the allowance of t (which is finite or NaN).
     constexpr bool near(T t_now) const noexcept {
         const T s = T(8) * std::numeric_limits<T>::epsilon() * (magnitude(t) + magnitude(dt) + magnitude(t_start));
@@ -190,7 +179,7 @@ public:
         const State acc = detail::acceleration(a, t, x, v);
         const State x1 = detail::plus_scaled(x, dt, v);    // x_{n+1} = x_n + v_n dt
         const State v1 = detail::plus_scaled(v, dt, acc);  // v_{n+1} = v_n + a_n dt
-        if (!detail::all_finite(x1) || !detail::all_finite(v1)) return status::non_finite;
+        if (!detail::all_finite(x1, v1)) return status::non_finite;
         x = x1;
         v = v1;
         return status::ok;
@@ -217,7 +206,7 @@ public:
             v1[n] = v[n] + acc[n] * dt;
             x1[n] = x[n] + (v[n] + v1[n]) * half;
         }
-        if (!detail::all_finite(x1) || !detail::all_finite(v1)) return status::non_finite;
+        if (!detail::all_finite(x1, v1)) return status::non_finite;
         x = x1;
         v = v1;
         return status::ok;
@@ -272,7 +261,7 @@ private:
             ex[n] = a0[n] * (half * dt);
             ev[n] = (a_mid[n] - a0[n]) * dt;
         }
-        if (!detail::all_finite(x1) || !detail::all_finite(v1) || !detail::all_finite(ev)) return status::non_finite;
+        if (!detail::all_finite(x1, v1, ev)) return status::non_finite;
         x = x1;
         v = v1;
         error_x = ex;
@@ -300,7 +289,8 @@ public:
         using T = value_type;
         const T half = dt / T(2);
         State v_half;
-        if (next_.matches(t, dt, x)) {
+        const bool continuing = next_.matches(t, dt, x);
+        if (continuing) {
             v_half = detail::plus_scaled(v_half_, dt, a_next_);  // v_{n+1/2} = v_{n-1/2} + a_n dt
         } else {
             v_half = detail::plus_scaled(v, half, detail::acceleration(a, t, x));  // v_{1/2} = v_0 + a_0 dt/2
@@ -308,12 +298,14 @@ public:
         const State x1 = detail::plus_scaled(x, dt, v_half);  // x_{n+1} = x_n + v_{n+1/2} dt
         const State a1 = detail::acceleration(a, t + dt, x1);
         const State v1 = detail::plus_scaled(v_half, half, a1);  // v_{n+1} = v_{n+1/2} + a_{n+1} dt/2
-        if (!detail::all_finite(x1) || !detail::all_finite(v1) || !detail::all_finite(a1)) return status::non_finite;
+        // a1 and v_half need no test of their own: v1 = v_half + a1 dt/2 and x1 = x + v_half dt are +-Inf or
+        // NaN when they are (0 Inf is NaN, for dt = 0 too).
+        if (!detail::all_finite(x1, v1)) return status::non_finite;
         x = x1;
         v = v1;
         v_half_ = v_half;
         a_next_ = a1;
-        next_.expect(t, dt, x);
+        next_.expect(t, dt, x, continuing);
         return status::ok;
     }
 
@@ -340,7 +332,8 @@ public:
         using T = value_type;
         const T dt2 = dt * dt;
         State x1;
-        if (next_.matches(t, dt, x)) {
+        const bool continuing = next_.matches(t, dt, x);
+        if (continuing) {
             ODESTEP_UNROLL
             for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = T(2) * x[n] - x_prev_[n] + a_next_[n] * dt2;
         } else {
@@ -356,12 +349,12 @@ public:
             const T x2 = T(2) * x1[n] - x[n] + a1[n] * dt2;  // x_{n+2}
             v1[n] = (x2 - x[n]) / two_dt;                      // v_{n+1} = (x_{n+2} - x_n) / (2 dt)
         }
-        if (!detail::all_finite(x1) || !detail::all_finite(v1)) return status::non_finite;
+        if (!detail::all_finite(x1, v1)) return status::non_finite;
         x_prev_ = x;
         x = x1;
         v = v1;
         a_next_ = a1;
-        next_.expect(t, dt, x);
+        next_.expect(t, dt, x, continuing);
         return status::ok;
     }
 
@@ -389,28 +382,34 @@ public:
         using T = value_type;
         const bool continuing = next_.matches(t, dt, x);
         const State a0 = continuing ? a_now_ : detail::acceleration(a, t, x);
-        const State& a_before = continuing ? a_prev_ : a0;
         const T dt2_6 = dt * dt / T(6);
         const T dt_6 = dt / T(6);
+        // The choice made once per step, not in every component (at -Os the loops stay loops).
         State x1;
-        ODESTEP_UNROLL
-        for (std::size_t n = 0; n < x1.size(); ++n) {
-            x1[n] = continuing ? x[n] + v[n] * dt + (T(4) * a0[n] - a_before[n]) * dt2_6
-                               : x[n] + v[n] * dt + a0[n] * (dt * dt / T(2));
+        if (continuing) {
+            ODESTEP_UNROLL
+            for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + (T(4) * a0[n] - a_prev_[n]) * dt2_6;
+        } else {
+            ODESTEP_UNROLL
+            for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + a0[n] * (dt * dt / T(2));
         }
         const State a1 = detail::acceleration(a, t + dt, x1);
         State v1;
-        ODESTEP_UNROLL
-        for (std::size_t n = 0; n < v1.size(); ++n) {
-            v1[n] = continuing ? v[n] + (T(2) * a1[n] + T(5) * a0[n] - a_before[n]) * dt_6
-                               : v[n] + (a0[n] + a1[n]) * (dt / T(2));
+        if (continuing) {
+            ODESTEP_UNROLL
+            for (std::size_t n = 0; n < v1.size(); ++n)
+                v1[n] = v[n] + (T(2) * a1[n] + T(5) * a0[n] - a_prev_[n]) * dt_6;
+        } else {
+            ODESTEP_UNROLL
+            for (std::size_t n = 0; n < v1.size(); ++n) v1[n] = v[n] + (a0[n] + a1[n]) * (dt / T(2));
         }
-        if (!detail::all_finite(x1) || !detail::all_finite(v1) || !detail::all_finite(a1)) return status::non_finite;
+        // a1 needs no test of its own: v1 is +-Inf or NaN when it is (0 Inf is NaN, for dt = 0 too).
+        if (!detail::all_finite(x1, v1)) return status::non_finite;
         x = x1;
         v = v1;
         a_prev_ = a0;
         a_now_ = a1;
-        next_.expect(t, dt, x);
+        next_.expect(t, dt, x, continuing);
         return status::ok;
     }
 
@@ -448,7 +447,8 @@ public:
         if (!(tolerance > T(0)) || !detail::is_finite(tolerance)) return status::invalid_tolerance;
         const State a0 = detail::acceleration(a, t, x, v);
         State xp;
-        if (next_.matches(t, dt, x)) {
+        const bool continuing = next_.matches(t, dt, x);
+        if (continuing) {
             xp = detail::plus_scaled(x_prev_, T(2) * dt, v);  // x_p = x_{n-1} + 2 v_n dt
         } else {
             ODESTEP_UNROLL
@@ -470,7 +470,7 @@ public:
                                                                      detail::abs_value(v1[n] - vp[n])));
                 size = detail::max_value(size, detail::max_value(detail::abs_value(x1[n]), detail::abs_value(v1[n])));
             }
-            if (!detail::all_finite(x1) || !detail::all_finite(v1)) return status::non_finite;
+            if (!detail::all_finite(x1, v1)) return status::non_finite;
             xp = x1;
             vp = v1;
             if (change <= tolerance * size) {
@@ -478,7 +478,7 @@ public:
                 x = x1;
                 v = v1;
                 iterations_ = k;
-                next_.expect(t, dt, x);
+                next_.expect(t, dt, x, continuing);
                 return status::ok;
             }
         }

@@ -82,12 +82,14 @@ constexpr bool finite_sum(T sum) noexcept {
     return d == d;  // one compare and one branch on unordered; no zero constant
 }
 
-/// The exact test, component by component (y_i * 0 is +-0 exactly when y_i is finite, NaN otherwise).
-/// Always inlined: it is the slow path after a failed finite_sum, and as a call (at -Os) it made every
-/// value live across it spill to the stack on the hot path too (velocity Verlet on x86-64 -Os: 111
-/// instructions per step as a call, 95 inlined). Optimizing for size, the products are summed in a loop
-/// without a branch (zero exactly when every y_i is), the smallest form (M4F float RK4: 348 bytes, 368
-/// with the call; unrolled, the soft-float double builds grew by up to 50 bytes).
+/// The exact test, component by component. Always inlined: it is the slow path after a failed
+/// finite_sum, and as a call (at -Os) it made every value live across it spill to the stack on the hot
+/// path too (velocity Verlet on x86-64 -Os: 111 instructions per step as a call, 95 inlined).
+///   - Otherwise -largest <= y_i <= largest, false for +-Inf and NaN: comparisons, which overwrite no
+///     register, so the values the step is about to store need no copies kept for this path (x86-64
+///     -O2: 2 fewer instructions per step on the float oscillator's RK4).
+///   - Optimizing for size, the sum of y_i * 0 (+-0 exactly when y_i is finite, NaN otherwise) in a loop
+///     without a branch, the smallest form (M4F float RK4: 348 bytes of flash, 368 with the call).
 template <class T, std::size_t N>
 ODESTEP_INLINE constexpr bool each_finite(const std::array<T, N>& y) noexcept {
     if constexpr (optimizing_for_size) {
@@ -102,15 +104,22 @@ ODESTEP_INLINE constexpr bool each_finite(const std::array<T, N>& y) noexcept {
     }
 }
 
-/// True when every component is finite. The hot path is the plain sum of the components (finite_sum);
-/// only when that fails, because a component is not finite or because the sum overflowed, is the exact
-/// per-component test run.
 template <class T, std::size_t N>
-constexpr bool all_finite(const std::array<T, N>& y) noexcept {
+ODESTEP_INLINE constexpr void add_components(T& sum, const std::array<T, N>& y) noexcept {
+    ODESTEP_UNROLL
+    for (std::size_t n = 0; n < N; ++n) sum += y[n];
+}
+
+/// True when every component of every array given is finite. The hot path is one plain sum of all the
+/// components (finite_sum): one compare and one branch however many arrays; only when that fails,
+/// because a component is not finite or because the sum overflowed, is the exact test run.
+template <class T, std::size_t N, class... More>
+constexpr bool all_finite(const std::array<T, N>& y, const More&... more) noexcept {
     T sum = y[0];
     ODESTEP_UNROLL
     for (std::size_t n = 1; n < N; ++n) sum += y[n];
-    return finite_sum(sum) || each_finite(y);
+    (add_components(sum, more), ...);
+    return finite_sum(sum) || (each_finite(y) && (each_finite(more) && ...));
 }
 
 }  // namespace detail
