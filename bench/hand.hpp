@@ -224,6 +224,91 @@ inline void velocity_verlet(F f, std::array<T, N>& x, std::array<T, N>& v, std::
     acc = acc_new;
 }
 
+// The rest of the Newtonian family, for x'' = a(t, x) with the force f(t, x, acc) written into acc: each
+// update in place, its coefficient times h hoisted, one loop over the components per update (a kick and
+// the drift after it share one).
+
+/// Euler-Cromer (symplectic Euler, kick then drift): v <- v + h a(t, x), then x <- x + h v with the new v.
+/// One evaluation per step, nothing kept.
+template <class T, std::size_t N, class F>
+inline void euler_cromer(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
+    std::array<T, N> acc;
+    f(t, x, acc);
+    for (std::size_t i = 0; i < N; ++i) {
+        v[i] += h * acc[i];
+        x[i] += h * v[i];
+    }
+}
+
+/// Position Verlet (leapfrog, drift-kick-drift): x <- x + h/2 v, v <- v + h a(t + h/2, x), x <- x + h/2 v.
+/// One evaluation per step, nothing kept.
+template <class T, std::size_t N, class F>
+inline void position_verlet(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
+    const T h2 = h * T(0.5);
+    for (std::size_t i = 0; i < N; ++i) x[i] += h2 * v[i];
+    std::array<T, N> acc;
+    f(t + h2, x, acc);
+    for (std::size_t i = 0; i < N; ++i) {
+        v[i] += h * acc[i];
+        x[i] += h2 * v[i];
+    }
+}
+
+/// Forest-Ruth (Forest & Ruth 1990), the fourth-order triple jump of position Verlet: drift gamma/2,
+/// kick gamma, drift (1 - gamma)/2, kick 1 - 2 gamma, drift (1 - gamma)/2, kick gamma, drift gamma/2,
+/// gamma = 1 / (2 - 2^(1/3)). The coefficients are computed in long double from 2^(1/3) to 40 digits and
+/// rounded once to T, as odestep's detail::splitting_coefficients does; the time of each kick is the
+/// drift coefficients before it, summed in T. Three evaluations per step, nothing kept.
+template <class T, std::size_t N, class F>
+inline void forest_ruth(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
+    constexpr long double cbrt2 = 1.259921049894873164767210607278228350570L;  // 2^(1/3)
+    constexpr long double gamma = 1.0L / (2.0L - cbrt2);
+    constexpr T d_outer = T(gamma / 2.0L), d_inner = T((1.0L - gamma) / 2.0L);
+    constexpr T k_outer = T(gamma), k_inner = T(1.0L - 2.0L * gamma);
+    constexpr T c1 = d_outer, c2 = d_outer + d_inner, c3 = d_outer + d_inner + d_inner;
+    const T hd_outer = d_outer * h, hd_inner = d_inner * h, hk_outer = k_outer * h, hk_inner = k_inner * h;
+    std::array<T, N> acc;
+    for (std::size_t i = 0; i < N; ++i) x[i] += hd_outer * v[i];
+    f(t + c1 * h, x, acc);
+    for (std::size_t i = 0; i < N; ++i) {
+        v[i] += hk_outer * acc[i];
+        x[i] += hd_inner * v[i];
+    }
+    f(t + c2 * h, x, acc);
+    for (std::size_t i = 0; i < N; ++i) {
+        v[i] += hk_inner * acc[i];
+        x[i] += hd_inner * v[i];
+    }
+    f(t + c3 * h, x, acc);
+    for (std::size_t i = 0; i < N; ++i) {
+        v[i] += hk_outer * acc[i];
+        x[i] += hd_outer * v[i];
+    }
+}
+
+/// Beeman's algorithm, with a_n in `acc` and a_{n-1} in `acc_prev` kept in the caller's variables:
+///   x <- x + h v + h^2/6 (4 a_n - a_{n-1}),  a_{n+1} = a(t + h, x),  v <- v + h/6 (2 a_{n+1} + 5 a_n - a_{n-1}).
+/// The caller sets acc = a(x0) and started = false before a run: the run's first step, which has no
+/// a_{n-1}, is one velocity Verlet step (above), as odestep's beeman self-starts. One evaluation per step.
+template <class T, std::size_t N, class F>
+inline void beeman(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, N>& acc, std::array<T, N>& acc_prev,
+                   bool& started, T t, T h) {
+    if (!started) {
+        started = true;
+        acc_prev = acc;
+        velocity_verlet(f, x, v, acc, t, h);
+        return;
+    }
+    const T hh6 = h * h * (T(1) / T(6));
+    const T h6 = h * (T(1) / T(6));
+    for (std::size_t i = 0; i < N; ++i) x[i] += h * v[i] + hh6 * (T(4) * acc[i] - acc_prev[i]);
+    std::array<T, N> acc_new;
+    f(t + h, x, acc_new);
+    for (std::size_t i = 0; i < N; ++i) v[i] += h6 * (T(2) * acc_new[i] + T(5) * acc[i] - acc_prev[i]);
+    acc_prev = acc;
+    acc = acc_new;
+}
+
 }  // namespace bench::hand
 
 #endif

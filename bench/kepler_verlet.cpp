@@ -9,38 +9,14 @@
 
 #include "hand.hpp"
 #include "harness.hpp"
+#include "kepler.hpp"
 #include "problems.hpp"
 
 namespace {
-using vec = std::array<double, 2>;
-
-/// The harness's state: (x, v) as Odeint's std::pair of positions and velocities, seen by the harness as
-/// the four numbers x0, x1, v0, v1 (value_type, size, indexing and iteration for its comparisons).
-struct phase : std::pair<vec, vec> {
-    using value_type = double;
-    static constexpr std::size_t size() { return 4; }
-    double operator[](std::size_t i) const { return i < 2 ? first[i] : second[i - 2]; }
-    struct iterator {
-        const phase* p;
-        std::size_t i;
-        double operator*() const { return (*p)[i]; }
-        iterator& operator++() {
-            ++i;
-            return *this;
-        }
-        bool operator!=(const iterator& o) const { return i != o.i; }
-    };
-    iterator begin() const { return {this, 0}; }
-    iterator end() const { return {this, 4}; }
-};
-using State = phase;
-
-constexpr auto force = [](double, const vec& x) {
-    vec a;
-    bench::kepler<double>(x, a);
-    return a;
-};
-constexpr auto hand_force = [](double, const vec& x, vec& a) { bench::kepler<double>(x, a); };
+using bench::kepler_case::vec;
+using State = bench::kepler_case::phase;
+using bench::kepler_case::force;
+using bench::kepler_case::hand_force;
 constexpr auto odeint_force = [](const vec& x, const vec&, vec& a, double) { bench::kepler<double>(x, a); };
 
 odestep::velocity_verlet<vec> odestep_vv;
@@ -52,19 +28,6 @@ void start_odestep(const State& y0, double t0) { odestep_acc = force(t0, y0.firs
 void start_odestep_kept(const State&, double) { odestep_vv.reset(); }
 void start_hand(const State& y0, double t0) { hand_force(t0, y0.first, hand_acc); }
 void start_odeint(const State&, double) { odeint_vv.reset(); }
-
-/// The exact state at time t of the orbit with semi-major axis 1, eccentricity e, mu = 1, at perihelion at
-/// t = 0 on the positive x axis: E - e sin E = t by Newton's method, in long double.
-State kepler_exact(long double e, long double t) {
-    long double E = t;
-    for (int i = 0; i < 50; ++i) E -= (E - e * std::sin(E) - t) / (1.0L - e * std::cos(E));
-    const long double b = std::sqrt(1.0L - e * e);
-    const long double d = 1.0L - e * std::cos(E);
-    State s{};
-    s.first = {static_cast<double>(std::cos(E) - e), static_cast<double>(b * std::sin(E))};
-    s.second = {static_cast<double>(-std::sin(E) / d), static_cast<double>(b * std::cos(E) / d)};
-    return s;
-}
 }  // namespace
 
 BENCH_STEP int bench_step_kepler_verlet_odestep(State& y, State&, double t, double dt) {
@@ -87,8 +50,8 @@ int main(int argc, char** argv) {
     const double e = 0.5;
     const int steps = 500;
     const double dt = 2 * 3.14159265358979323846 / 1000;  // 1000 steps per orbit; the check: half an orbit
-    const State y0 = kepler_exact(e, 0.0L);                // x = (0.5, 0), v = (0, sqrt 3)
-    const State exact = kepler_exact(e, static_cast<long double>(steps) * static_cast<long double>(dt));
+    const State y0 = bench::kepler_case::exact(e, 0.0L);                // x = (0.5, 0), v = (0, sqrt 3)
+    const State exact = bench::kepler_case::exact(e, static_cast<long double>(steps) * static_cast<long double>(dt));
     bench::problem<State> p{"kepler_verlet", y0, 0.0, dt, steps, exact,
                             // Round-off: 500 steps, a few ulps each, through perihelion (|v| = sqrt 3)
                             // to aphelion; measured 1e-15 to 3e-15 between the arithmetic forms.

@@ -1,0 +1,61 @@
+// The planar Kepler problem (mu = 1, eccentricity 0.5, from perihelion), positions and velocities as two
+// std::array<double, 2>, Beeman's algorithm, fixed step. Both variants keep a_n and a_{n-1} between steps
+// (one evaluation of the force per step) and self-start with one velocity Verlet step: odestep in its
+// stepper (checked by its continuation test), the hand loop in variables next to the state. Neither Odeint
+// nor GSL odeiv2 has Beeman's method: no variant of theirs. The reference is the closed-form solution
+// (Kepler's equation by Newton's method).
+#include <utility>
+
+#include "hand.hpp"
+#include "harness.hpp"
+#include "kepler.hpp"
+#include "problems.hpp"
+
+namespace {
+using bench::kepler_case::vec;
+using State = bench::kepler_case::phase;
+using bench::kepler_case::force;
+using bench::kepler_case::hand_force;
+
+odestep::beeman<vec> odestep_beeman;
+vec hand_acc;       // the hand loop's a_n, a(x) of the current x
+vec hand_acc_prev;  // and its a_{n-1}
+bool hand_started;  // false: the next step is the run's first, a velocity Verlet step
+
+void start_odestep(const State&, double) { odestep_beeman.reset(); }
+void start_hand(const State& y0, double t0) {
+    hand_force(t0, y0.first, hand_acc);
+    hand_started = false;
+}
+}  // namespace
+
+BENCH_STEP int bench_step_kepler_beeman_odestep(State& y, State&, double t, double dt) {
+    return static_cast<int>(odestep_beeman.step(force, y.first, y.second, t, dt));
+}
+BENCH_STEP int bench_step_kepler_beeman_hand(State& y, State&, double t, double dt) {
+    bench::hand::beeman(hand_force, y.first, y.second, hand_acc, hand_acc_prev, hand_started, t, dt);
+    return 0;
+}
+
+int main(int argc, char** argv) {
+    const double e = 0.5;
+    const int steps = 500;
+    const double dt = 2 * 3.14159265358979323846 / 1000;  // 1000 steps per orbit; the check: half an orbit
+    const State y0 = bench::kepler_case::exact(e, 0.0L);                // x = (0.5, 0), v = (0, sqrt 3)
+    const State exact = bench::kepler_case::exact(e, static_cast<long double>(steps) * static_cast<long double>(dt));
+    bench::problem<State> p{"kepler_beeman", y0, 0.0, dt, steps, exact,
+                            // Round-off: 500 steps, a few ulps each (the hand loop groups x + (h v + ...)
+                            // and multiplies by 1/6 where odestep divides by 6); measured 5.3e-15 at -O2 and
+                            // -Os.
+                            1e-12,
+                            // Beeman (order 2) with 1000 steps per orbit: 3.02e-4 relative at aphelion
+                            // (7.62e-5 with 2000 steps, 1.91e-5 with 4000: h^2). Euler-Cromer (order 1) with
+                            // the same step is 1.9e-2 off.
+                            6e-4, false};
+    return bench::main<State>(
+        argc, argv, p,
+        {{"odestep", "odestep::beeman<std::array<double, 2>> step(a, x, v, t, dt)", bench_step_kepler_beeman_odestep,
+          true, start_odestep},
+         {"hand", "hand-written Beeman loop, a_n and a_{n-1} kept, velocity Verlet first step",
+          bench_step_kepler_beeman_hand, true, start_hand}});
+}
