@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <utility>
 
+#include "harness.hpp"
 #include "problems.hpp"
 
 namespace bench::kepler_case {
@@ -55,6 +56,17 @@ inline phase exact(long double e, long double t) {
     s.first = {static_cast<double>(std::cos(E) - e), static_cast<double>(b * std::sin(E))};
     s.second = {static_cast<double>(-std::sin(E) / d), static_cast<double>(b * std::cos(E) / d)};
     return s;
+}
+
+/// The case: half an orbit from perihelion with 1000 steps per orbit (500 steps), the exact state at its
+/// end as the reference. tol_same and tol_method as bench::problem (each case says where its come from).
+inline bench::problem<phase> problem(const char* name, double tol_same, double tol_method) {
+    const long double e = 0.5L;
+    const int steps = 500;
+    const double dt = 2 * 3.14159265358979323846 / 1000;
+    return {name, exact(e, 0.0L),  // x = (0.5, 0), v = (0, sqrt 3)
+            0.0, dt, steps, exact(e, static_cast<long double>(steps) * static_cast<long double>(dt)),
+            tol_same, tol_method, false};
 }
 
 }  // namespace bench::kepler_case

@@ -38,20 +38,15 @@ BENCH_STEP int bench_step_kepler_beeman_hand(State& y, State&, double t, double 
 }
 
 int main(int argc, char** argv) {
-    const double e = 0.5;
-    const int steps = 500;
-    const double dt = 2 * 3.14159265358979323846 / 1000;  // 1000 steps per orbit; the check: half an orbit
-    const State y0 = bench::kepler_case::exact(e, 0.0L);                // x = (0.5, 0), v = (0, sqrt 3)
-    const State exact = bench::kepler_case::exact(e, static_cast<long double>(steps) * static_cast<long double>(dt));
-    bench::problem<State> p{"kepler_beeman", y0, 0.0, dt, steps, exact,
-                            // Round-off: 500 steps, a few ulps each (the hand loop groups x + (h v + ...)
-                            // and multiplies by 1/6 where odestep divides by 6); measured 5.3e-15 at -O2 and
-                            // -Os.
-                            1e-12,
-                            // Beeman (order 2) with 1000 steps per orbit: 3.02e-4 relative at aphelion
-                            // (7.62e-5 with 2000 steps, 1.91e-5 with 4000: h^2). Euler-Cromer (order 1) with
-                            // the same step is 1.9e-2 off.
-                            6e-4, false};
+    const bench::problem<State> p = bench::kepler_case::problem("kepler_beeman",
+        // Round-off: 500 steps, a few ulps each (the hand loop groups x + (h v + ...)
+        // and multiplies by 1/6 where odestep divides by 6); measured 5.3e-15 at -O2 and
+        // -Os.
+        1e-12,
+        // Beeman (order 2) with 1000 steps per orbit: 3.02e-4 relative at aphelion
+        // (7.62e-5 with 2000 steps, 1.91e-5 with 4000: h^2). Euler-Cromer (order 1) with
+        // the same step is 1.9e-2 off.
+        6e-4);
     return bench::main<State>(
         argc, argv, p,
         {{"odestep", "odestep::beeman<std::array<double, 2>> step(a, x, v, t, dt)", bench_step_kepler_beeman_odestep,

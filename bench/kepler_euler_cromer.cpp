@@ -39,21 +39,16 @@ BENCH_STEP int bench_step_kepler_euler_cromer_odeint(State& y, State&, double t,
 }
 
 int main(int argc, char** argv) {
-    const double e = 0.5;
-    const int steps = 500;
-    const double dt = 2 * 3.14159265358979323846 / 1000;  // 1000 steps per orbit; the check: half an orbit
-    const State y0 = bench::kepler_case::exact(e, 0.0L);                // x = (0.5, 0), v = (0, sqrt 3)
-    const State exact = bench::kepler_case::exact(e, static_cast<long double>(steps) * static_cast<long double>(dt));
-    bench::problem<State> p{"kepler_euler_cromer", y0, 0.0, dt, steps, exact,
-                            // Round-off: 500 steps of the same two updates in the same order; measured 0
-                            // (bit for bit) at -O2 and -Os.
-                            1e-12,
-                            // Euler-Cromer (order 1) with 1000 steps per orbit: 1.88e-2 relative at
-                            // aphelion (9.54e-3 with 2000 steps, 4.80e-3 with 4000: h). Odeint's drift-first
-                            // adjoint: 1.99e-2 (9.81e-3, 4.87e-3; bit for bit odestep's
-                            // euler_cromer_drift_first, 3.9e-2 from Euler-Cromer). Forward Euler with the same
-                            // step is 9.7e-2 off.
-                            4e-2, false};
+    const bench::problem<State> p = bench::kepler_case::problem("kepler_euler_cromer",
+        // Round-off: 500 steps of the same two updates in the same order; measured 0
+        // (bit for bit) at -O2 and -Os.
+        1e-12,
+        // Euler-Cromer (order 1) with 1000 steps per orbit: 1.88e-2 relative at
+        // aphelion (9.54e-3 with 2000 steps, 4.80e-3 with 4000: h). Odeint's drift-first
+        // adjoint: 1.99e-2 (9.81e-3, 4.87e-3; bit for bit odestep's
+        // euler_cromer_drift_first, 3.9e-2 from Euler-Cromer). Forward Euler with the same
+        // step is 9.7e-2 off.
+        4e-2);
     return bench::main<State>(
         argc, argv, p,
         {{"odestep", "odestep::euler_cromer<std::array<double, 2>> step(a, x, v, t, dt)",

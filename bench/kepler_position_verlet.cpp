@@ -28,19 +28,14 @@ BENCH_STEP int bench_step_kepler_position_verlet_hand(State& y, State&, double t
 }
 
 int main(int argc, char** argv) {
-    const double e = 0.5;
-    const int steps = 500;
-    const double dt = 2 * 3.14159265358979323846 / 1000;  // 1000 steps per orbit; the check: half an orbit
-    const State y0 = bench::kepler_case::exact(e, 0.0L);                // x = (0.5, 0), v = (0, sqrt 3)
-    const State exact = bench::kepler_case::exact(e, static_cast<long double>(steps) * static_cast<long double>(dt));
-    bench::problem<State> p{"kepler_position_verlet", y0, 0.0, dt, steps, exact,
-                            // Round-off: 500 steps of the same three updates in the same order; measured 0
-                            // (bit for bit) at -O2 and -Os.
-                            1e-12,
-                            // Position Verlet (order 2) with 1000 steps per orbit: 1.23e-4 relative at
-                            // aphelion (3.07e-5 with 2000 steps, 7.67e-6 with 4000: h^2). Euler-Cromer
-                            // (order 1) with the same step is 1.9e-2 off.
-                            3e-4, false};
+    const bench::problem<State> p = bench::kepler_case::problem("kepler_position_verlet",
+        // Round-off: 500 steps of the same three updates in the same order; measured 0
+        // (bit for bit) at -O2 and -Os.
+        1e-12,
+        // Position Verlet (order 2) with 1000 steps per orbit: 1.23e-4 relative at
+        // aphelion (3.07e-5 with 2000 steps, 7.67e-6 with 4000: h^2). Euler-Cromer
+        // (order 1) with the same step is 1.9e-2 off.
+        3e-4);
     return bench::main<State>(
         argc, argv, p,
         {{"odestep", "odestep::position_verlet<std::array<double, 2>> step(a, x, v, t, dt)",

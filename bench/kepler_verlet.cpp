@@ -47,19 +47,14 @@ BENCH_STEP int bench_step_kepler_verlet_odeint(State& y, State&, double t, doubl
 }
 
 int main(int argc, char** argv) {
-    const double e = 0.5;
-    const int steps = 500;
-    const double dt = 2 * 3.14159265358979323846 / 1000;  // 1000 steps per orbit; the check: half an orbit
-    const State y0 = bench::kepler_case::exact(e, 0.0L);                // x = (0.5, 0), v = (0, sqrt 3)
-    const State exact = bench::kepler_case::exact(e, static_cast<long double>(steps) * static_cast<long double>(dt));
-    bench::problem<State> p{"kepler_verlet", y0, 0.0, dt, steps, exact,
-                            // Round-off: 500 steps, a few ulps each, through perihelion (|v| = sqrt 3)
-                            // to aphelion; measured 1e-15 to 3e-15 between the arithmetic forms.
-                            1e-12,
-                            // Velocity Verlet (order 2) with 1000 steps per orbit: 2.66e-4 relative at
-                            // aphelion (6.65e-5 with 2000 steps, 1.66e-5 with 4000: h^2). Euler-Cromer
-                            // (order 1) with the same step is 1.9e-2 off.
-                            5e-4, false};
+    const bench::problem<State> p = bench::kepler_case::problem("kepler_verlet",
+        // Round-off: 500 steps, a few ulps each, through perihelion (|v| = sqrt 3)
+        // to aphelion; measured 1e-15 to 3e-15 between the arithmetic forms.
+        1e-12,
+        // Velocity Verlet (order 2) with 1000 steps per orbit: 2.66e-4 relative at
+        // aphelion (6.65e-5 with 2000 steps, 1.66e-5 with 4000: h^2). Euler-Cromer
+        // (order 1) with the same step is 1.9e-2 off.
+        5e-4);
     return bench::main<State>(
         argc, argv, p,
         {{"odestep", "odestep::velocity_verlet<std::array<double, 2>> step(a, x, v, acc, t, dt), acc kept by the caller",
