@@ -75,6 +75,18 @@ std::size_t allocations_of_newtonian_calls() {
     run(odestep::forest_ruth<vec>{});
     run(odestep::yoshida6<vec>{});
     run(odestep::blanes_moan4<vec>{});
+    // the first-same-as-last steppers' form with the acceleration kept by the caller, a good step and a
+    // failing one (NaN from the force)
+    auto run_caller_kept = [&](const auto& stepper) {
+        vec x{T(1), T(0)};
+        vec v{T(0), T(1)};
+        vec acc = spring(T(0), x);
+        (void)stepper.step(spring, x, v, acc, T(0), T(0.01));
+        auto poison = [](T, const vec&) { return vec{std::numeric_limits<T>::quiet_NaN(), T(0)}; };
+        (void)stepper.step(poison, x, v, acc, T(0.01), T(0.01));
+    };
+    run_caller_kept(odestep::velocity_verlet<vec>{});
+    run_caller_kept(odestep::blanes_moan4<vec>{});
     return odestep_test::allocations() - before;
 }
 
