@@ -17,6 +17,18 @@
 #include "status.hpp"
 #include "tableau.hpp"  // detail::abs_value, detail::max_value
 
+// The event loop's rare path (a crossing, a probe, a NaN) is kept out of line, so that a quiet step's frame
+// and registers hold only what a quiet step needs.
+#ifndef ODESTEP_EVENTS_NOINLINE
+#if defined(__GNUC__) || defined(__clang__)
+#define ODESTEP_EVENTS_NOINLINE [[gnu::noinline]]
+#elif defined(_MSC_VER)
+#define ODESTEP_EVENTS_NOINLINE __declspec(noinline)
+#else
+#define ODESTEP_EVENTS_NOINLINE
+#endif
+#endif
+
 namespace odestep {
 
 /// Which sign changes of g count: rising (- to +), falling (+ to -) or either. Reaching exactly zero from
@@ -277,6 +289,16 @@ constexpr event_result call_action(Action& action, T t, const std::array<State*,
     }
 }
 
+// What one step with events ends in: the status, the time of the state, the firings inside the step and the
+// event that stopped it (or no_event).
+template <class T>
+struct advance_result {
+    status code;
+    T t;
+    std::size_t fired;
+    std::size_t event;
+};
+
 // The event loop's state and its one step with events; integrate with events and event_stepper both use it.
 // K is the number of state objects (1: y; 2: x and v).
 template <class State, std::size_t K, class Set>
@@ -293,6 +315,7 @@ public:
     using values = std::array<T, E>;
 
     std::array<event_memory<T>, E> memory{};
+    bool all_armed = false;  // every event is armed: kept by rearm and fire_all, read by the quiet step's test
 
     // Checks the settings and evaluates every g at the start. An event whose g is zero there is not armed.
     template <class Ptrs>
@@ -306,97 +329,145 @@ public:
     }
 
     // One step of h from (t_s, y) to t_end (t_end = t_s + h, with t_end from the caller's counter), with
-    // every event it contains located, fired and acted on. On return `t_out` is the time of y.
+    // every event it contains located, fired and acted on; the result's t is the time of y. sink(k, i, t) is
+    // told the k-th firing inside the step (k from 0): event i at t.
     template <class Stepper, class System, class Sink>
-    status advance(Stepper& stepper, System& f, set_type& set, const refs& y, T t_s, T h, T t_end, Sink& sink,
-                   T& t_out, std::size_t& stopped_by) {
+    advance_result<T> advance(Stepper& stepper, System& f, set_type& set, refs y, T t_s, T h, T t_end, Sink sink) {
+        pack start;
+        const status s = step(stepper, f, y, t_s, h, start);
+        if (ODESTEP_UNLIKELY(s != status::ok)) return {s, t_s, 0, no_event};
+        values g;
+        if (ODESTEP_UNLIKELY(!settle(set, y, t_end, g)))
+            return advance_rest(stepper, f, set, y, start, g, t_s, h, t_end, sink);
+        return {status::ok, t_end, 0, no_event};
+    }
+
+    // advance in three parts. The first two, inlined into the caller, are the step with nothing in it: step
+    // takes the step, keeping y's state before it in start (the rollback, and the start of the re-steps that
+    // locate an event); y is untouched if it fails. settle evaluates every g once at the step's end (into g)
+    // and proves, with one test, that nothing happened: then the events' memory is updated and the answer
+    // is true. Otherwise (a crossing, probes, a NaN or Inf from g, or a test that cannot tell) it is false,
+    // and advance_rest, out of line, takes over from there: its buffers and registers cost a quiet step
+    // nothing.
+    template <class Stepper, class System>
+    ODESTEP_INLINE static status step(Stepper& stepper, System& f, const refs& y, T t_s, T h, pack& start) {
+        load(y, start);
+        return call_step(stepper, f, y, t_s, h, seq{});
+    }
+
+    ODESTEP_INLINE bool settle(set_type& set, const refs& y, T t_end, values& g) {
+        evaluate(set, t_end, y, g);
+        if (ODESTEP_UNLIKELY(!quiet(set, g))) return false;
+        remember(set, g);
+        if (!all_armed) {
+            const values copy = g;  // (rearm's reference to a copy: g itself can stay in registers)
+            rearm(set, t_end, copy);
+        }
+        return true;
+    }
+
+    // The rest of advance, after settle returned false (start and g as step and settle left them): every
+    // crossing inside the step located, fired and acted on; after an action that changed the state, the rest
+    // of the step again from the event.
+    template <class Stepper, class System, class Sink>
+    ODESTEP_EVENTS_NOINLINE advance_result<T> advance_rest(Stepper& stepper, System& f, set_type& set, refs y,
+                                                           pack& start, values g_end, T t_s, T h, T t_end,
+                                                           Sink sink) {
+        status s = status::ok;
         std::size_t fired_here = 0;
         bool partial = false;
         const std::size_t pieces = set.limits.probes + 1;
+        // The states of the scan: lo_state at lo (also the state before an action, once lo is no longer
+        // needed), hi_state at a probe, a_state and b_state at the ends of a location's bracket.
+        pack lo_state;
+        pack hi_state;
+        pack a_state;
+        pack b_state;
         // One pass per restart: the first, and one after each firing that changed the state.
         for (;;) {
-            pack start = load(y);
-            const status s = call_step(stepper, f, y, t_s, h, seq{});
-            if (s != status::ok) {
-                t_out = t_s;
-                return s;
+            if (partial) {
+                load(y, start);
+                s = call_step(stepper, f, y, t_s, h, seq{});
+                if (s != status::ok) return {s, t_s, fired_here, no_event};
+                evaluate(set, t_end, y, g_end);
             }
-            values g_end{};
-            if (!evaluate_all(set, t_end, y, g_end)) {
-                store(y, start);
-                t_out = t_s;
-                return status::non_finite_event;
-            }
-            // The common case, nothing crossed and no probes: remember the values and go on.
+            if (!all_finite(g_end)) return fail(y, start, t_s, status::non_finite_event, fired_here);
+            // Nothing crossed and no probes: remember the values and go on.
             if (pieces == 1 && !any_crossing(set, g_end)) {
                 for (std::size_t i = 0; i < E; ++i) memory[i].g = g_end[i];
                 rearm(set, t_end, g_end);
                 if (partial) reset_if_any(stepper);
-                t_out = t_end;
-                return status::ok;
+                return {status::ok, t_end, fired_here, no_event};
             }
             // Scan (0, h] piece by piece (the pieces end at the probes and at h). lo is where the events'
             // memory was last updated; lo_state the state there.
             T lo = T(0);
-            pack lo_state = start;
+            lo_state = start;
             bool restarted = false;
+            // The probes and the location's re-steps go from the step's start on a copy of the stepper, reset
+            // before each (its history, if any, belongs to the regular steps).
+            Stepper scratch = stepper;
             for (std::size_t k = 1; k <= pieces && !restarted; ++k) {
                 T hi = h;
-                pack hi_state;
+                refs hi_refs = y;  // the state at hi: y at the step's end, hi_state at a probe
                 values g_hi = g_end;
                 if (k < pieces) {
                     hi = h * static_cast<T>(k) / static_cast<T>(pieces);
                     hi_state = start;
-                    Stepper probe = stepper;
-                    reset_if_any(probe);
-                    const status ps = call_step(probe, f, pointers(hi_state), t_s, hi, seq{});
-                    if (ps != status::ok) return fail(y, lo_state, t_s + lo, ps, t_out);
-                    if (!evaluate_all(set, t_s + hi, pointers(hi_state), g_hi))
-                        return fail(y, lo_state, t_s + lo, status::non_finite_event, t_out);
-                } else {
-                    hi_state = load(y);
+                    hi_refs = pointers(hi_state);
+                    reset_if_any(scratch);
+                    const status ps = call_step(scratch, f, hi_refs, t_s, hi, seq{});
+                    if (ps != status::ok) return fail(y, lo_state, t_s + lo, ps, fired_here);
+                    if (!evaluate_all(set, t_s + hi, hi_refs, g_hi))
+                        return fail(y, lo_state, t_s + lo, status::non_finite_event, fired_here);
                 }
                 // Every firing inside (lo, hi].
                 for (;;) {
                     if (!any_crossing(set, g_hi)) break;
                     if (fired_here >= set.limits.max_firings_per_step)
-                        return fail(y, lo_state, t_s + lo, status::event_limit, t_out);
+                        return fail(y, lo_state, t_s + lo, status::event_limit, fired_here);
                     // Locate the earliest crossing: [a, b] with b - a within tolerance.
                     T a = lo;
                     T b = hi;
-                    pack a_state = lo_state;
-                    pack b_state = hi_state;
+                    load(hi_refs, b_state);
                     values g_b = g_hi;
-                    const status ls = locate(stepper, f, set, start, t_s, h, a, b, a_state, b_state, g_b);
-                    if (ls != status::ok) return fail(y, lo_state, t_s + lo, ls, t_out);
+                    const status ls =
+                        locate(scratch, f, set, start, t_s, h, lo, lo_state, a, b, a_state, b_state, g_b);
+                    if (ls != status::ok) return fail(y, lo_state, t_s + lo, ls, fired_here);
                     // Fire, in the order given, every event that has crossed by b, at t* = t_s + a with
-                    // the integrator's state there.
+                    // the integrator's state there. From here on lo_state is free: it holds the state before
+                    // each round of actions.
                     const T t_star = t_s + a;
-                    const pack located = a_state;
                     values g_cross = g_b;
                     bool changed = false;
                     // An action may move the state across (or onto) another event's zero: that event fires
                     // too, at the same time, after it. Each round fires at least one event, so the firing
                     // limit bounds the rounds.
                     for (;;) {
-                        const pack before = a_state;
+                        if constexpr (!actions_keep_state) lo_state = a_state;
                         std::size_t stop_index = no_event;
                         bool limited = false;
                         fire_all(set, t_star, pointers(a_state), g_cross, sink, fired_here, stop_index, limited);
-                        if (!all_finite_pack(a_state)) return fail(y, before, t_star, status::non_finite, t_out);
+                        if constexpr (!actions_keep_state) {
+                            if (!all_finite_pack(a_state))
+                                return fail(y, lo_state, t_star, status::non_finite, fired_here);
+                        }
                         if (stop_index != no_event || limited) {
                             store(y, a_state);
-                            t_out = t_star;
-                            stopped_by = stop_index;
-                            return limited ? status::event_limit : status::stopped_by_event;
+                            return {limited ? status::event_limit : status::stopped_by_event, t_star, fired_here,
+                                    stop_index};
                         }
-                        if (same(a_state, before)) break;
-                        changed = true;
-                        if (!evaluate_all(set, t_star, pointers(a_state), g_cross))
-                            return fail(y, before, t_star, status::non_finite_event, t_out);
-                        if (!any_crossing(set, g_cross)) break;
+                        if constexpr (actions_keep_state) {
+                            break;
+                        } else {
+                            if (same(a_state, lo_state)) break;
+                            changed = true;
+                            if (!evaluate_all(set, t_star, pointers(a_state), g_cross))
+                                return fail(y, lo_state, t_star, status::non_finite_event, fired_here);
+                            if (!any_crossing(set, g_cross)) break;
+                        }
                     }
-                    if (changed || !same(a_state, located)) {
+                    if (changed) {
                         // The actions changed the state: the rest of the step starts again from it.
                         store(y, a_state);
                         for (std::size_t i = 0; i < E; ++i) memory[i].g = g_cross[i];
@@ -415,7 +486,7 @@ public:
                 }
                 if (restarted) break;
                 lo = hi;
-                lo_state = hi_state;
+                load(hi_refs, lo_state);
                 for (std::size_t i = 0; i < E; ++i) memory[i].g = g_hi[i];
                 rearm(set, t_s + hi, g_hi);
             }
@@ -423,13 +494,10 @@ public:
                 // A pass that began at an event took a partial step: a history built on it would not fit
                 // the next regular step, so a multistep method starts afresh.
                 if (partial) reset_if_any(stepper);
-                t_out = t_end;
-                return status::ok;
+                return {status::ok, t_end, fired_here, no_event};
             }
-            if (h == T(0)) {  // the event was at the step's end (to rounding): y is already there
-                t_out = t_end;
-                return status::ok;
-            }
+            if (h == T(0)) return {status::ok, t_end, fired_here, no_event};  // the event was at the step's end
+                                                                              // (to rounding): y is already there
             partial = true;
         }
     }
@@ -438,10 +506,53 @@ private:
     using seq = std::make_index_sequence<K>;
     using events_seq = std::index_sequence_for<Events...>;
 
-    static pack load(const refs& y) {
-        pack p;
+    // record and terminal leave the state alone: with only those, a firing never restarts the step, and the
+    // state before the actions needs no copy.
+    template <class Ev>
+    static constexpr bool keeps_state_v = std::is_same_v<std::remove_cv_t<decltype(Ev::action)>, record_action> ||
+                                          std::is_same_v<std::remove_cv_t<decltype(Ev::action)>, stop_action>;
+    static constexpr bool actions_keep_state = (keeps_state_v<Events> && ...);
+
+    // The quiet step's test: true only if every g is finite and no event crossed; false when it cannot tell
+    // (advance_rest decides then). With every event armed it is one product per event: g before times g now
+    // is positive only when both are strictly on the same side of zero, which no direction counts as a
+    // crossing (a product that underflows to zero only sends the step to the full test).
+    // The products also prove every g finite (the memory's g are): their sum, of positive terms, is at most
+    // the largest finite T only if every term is finite (an overflowed sum only sends the step on, too).
+    ODESTEP_INLINE bool quiet(const set_type& set, const values& g) const {
+        if (set.limits.probes != 0) return false;
+        if (all_armed) {
+            // (compile-time indices throughout, here and in remember: g then stays in registers)
+            T sum = memory[0].g * g[0];
+            bool same_side = sum > T(0);
+            for_each(set, [&](auto index, const auto&) {
+                constexpr std::size_t i = decltype(index)::value;
+                if constexpr (i > 0) {
+                    const T p = memory[i].g * g[i];
+                    same_side = same_side && p > T(0);
+                    sum += p;
+                }
+            });
+            return same_side && sum <= std::numeric_limits<T>::max();
+        }
+        T sum = g[0];
+        for_each(set, [&](auto index, const auto&) {
+            constexpr std::size_t i = decltype(index)::value;
+            if constexpr (i > 0) sum += g[i];
+        });
+        return finite_sum(sum) && !any_crossing(set, g);  // finite_sum proves every g finite
+    }
+
+    // The g values become the events' memory: crossings are measured from them next.
+    ODESTEP_INLINE void remember(const set_type& set, const values& g) {
+        for_each(set, [&](auto index, const auto&) {
+            constexpr std::size_t i = decltype(index)::value;
+            memory[i].g = g[i];
+        });
+    }
+
+    ODESTEP_INLINE static void load(const refs& y, pack& p) {
         for (std::size_t k = 0; k < K; ++k) p[k] = *y[k];
-        return p;
     }
     static void store(const refs& y, const pack& p) {
         for (std::size_t k = 0; k < K; ++k) *y[k] = p[k];
@@ -462,10 +573,10 @@ private:
             if (!all_finite(p[k])) return false;
         return true;
     }
-    static status fail(const refs& y, const pack& good, T t_good, status s, T& t_out) {
+    // Back to the last good state, at t_good.
+    static advance_result<T> fail(const refs& y, const pack& good, T t_good, status s, std::size_t fired) {
         store(y, good);
-        t_out = t_good;
-        return s;
+        return {s, t_good, fired, no_event};
     }
 
     static constexpr bool valid_setting(T v) noexcept { return is_finite(v) && !(v < T(0)); }
@@ -479,11 +590,11 @@ private:
     }
 
     template <class Set, class Fn, std::size_t... I>
-    static void for_each_impl(Set& set, Fn&& fn, std::index_sequence<I...>) {
+    ODESTEP_INLINE static void for_each_impl(Set& set, Fn&& fn, std::index_sequence<I...>) {
         (fn(std::integral_constant<std::size_t, I>{}, std::get<I>(set.events)), ...);
     }
     template <class Set, class Fn>
-    static void for_each(Set& set, Fn&& fn) {
+    ODESTEP_INLINE static void for_each(Set& set, Fn&& fn) {
         for_each_impl(set, fn, events_seq{});
     }
 
@@ -493,18 +604,22 @@ private:
                       "odestep: an event's State (make_event<State>) must be the integrated state type");
     }
 
-    // g_i(t, y) for every event; false if one is NaN or Inf.
+    // g_i(t, y) for every event, unchecked.
     template <class Ptrs>
-    static bool evaluate_all(set_type& set, T t, const Ptrs& y, values& g) {
-        bool finite = true;
+    ODESTEP_INLINE static void evaluate(set_type& set, T t, const Ptrs& y, values& g) {
         for_each(set, [&](auto index, auto& e) {
             using Ev = std::remove_reference_t<decltype(e)>;
             check_event_type<Ev>();
             constexpr std::size_t i = decltype(index)::value;
             g[i] = call_g<State>(e.g, t, y, seq{});
-            finite = finite && is_finite(g[i]);
         });
-        return finite;
+    }
+
+    // g_i(t, y) for every event; false if one is NaN or Inf.
+    template <class Ptrs>
+    static bool evaluate_all(set_type& set, T t, const Ptrs& y, values& g) {
+        evaluate(set, t, y, g);
+        return all_finite(g);
     }
 
     // fn(event) for event i, a run-time index: the one place that turns an index into an event's type.
@@ -533,7 +648,7 @@ private:
         return memory[i].armed && crosses(direction_of(set, i), memory[i].g, g_now);
     }
 
-    // Any event crossed (the quiet step's one test: compile-time indices, each event's own direction).
+    // Any event crossed (compile-time indices, each event's own direction).
     bool any_crossing(const set_type& set, const values& g) const {
         bool any = false;
         for_each(set, [&](auto index, const auto& e) {
@@ -545,31 +660,32 @@ private:
 
     // Arms the events that may fire again: g seen beyond the band, the dead time over, firings left.
     void rearm(const set_type& set, T t, const values& g) {
+        bool all = true;
         for_each(set, [&](auto index, const auto& e) {
             constexpr std::size_t i = decltype(index)::value;
             event_memory<T>& m = memory[i];
-            if (m.armed) return;
-            const bool quiet = e.max_firings != 0 && m.fired >= e.max_firings;
-            const bool rested = m.fired == 0 || !(abs_value(t - m.last) < e.dead_time);
-            if (!quiet && rested && abs_value(g[i]) > e.band) m.armed = true;
+            if (!m.armed) {
+                const bool quiet_now = e.max_firings != 0 && m.fired >= e.max_firings;
+                const bool rested = m.fired == 0 || !(abs_value(t - m.last) < e.dead_time);
+                if (!quiet_now && rested && abs_value(g[i]) > e.band) m.armed = true;
+            }
+            all = all && m.armed;
         });
+        all_armed = all;
     }
 
     // Narrows [a, b] (the crossings between lo = a and b) to the earliest one: every event crossed by b is
-    // located on [lo, b] in turn, and b only moves earlier. Re-steps go from the step's start, so the event
-    // state is the integrator's own. On return [a, b] brackets the earliest crossing, a_state and b_state are
-    // the states there and g_b all g at b.
+    // located on [lo, b] in turn, and b only moves earlier. Re-steps go from the step's start (on `trial`,
+    // a copy of the stepper, reset before each), so the event state is the integrator's own. On return [a, b]
+    // brackets the earliest crossing, a_state and b_state are the states there and g_b all g at b.
     template <class Stepper, class System>
-    status locate(const Stepper& stepper, System& f, set_type& set, const pack& start, T t_s, T h, T& a, T& b,
-                  pack& a_state, pack& b_state, values& g_b) {
-        const T lo = a;
-        const pack lo_state = a_state;
+    ODESTEP_INLINE status locate(Stepper& trial, System& f, set_type& set, const pack& start, T t_s, T h, T lo,
+                                 const pack& lo_state, T& a, T& b, pack& a_state, pack& b_state, values& g_b) {
         const T default_tolerance = T(4) * std::numeric_limits<T>::epsilon() * (abs_value(t_s) + abs_value(h));
         const std::size_t cap = event_iterations<T, Finder>(set.limits);
         // The trial states live in h-scaled units of time: s in (0, h] (or [h, 0) integrating backwards).
         // The finders want a < b, so they work on u = s / sign(h).
         const T sign_h = h < T(0) ? T(-1) : T(1);
-        Stepper trial = stepper;
         pack trial_state;
         status failure = status::ok;
         for (std::size_t c = 0; c < E; ++c) {
@@ -584,9 +700,9 @@ private:
             T tolerance = T(0);
             visit(set, c, [&](const auto& e) { tolerance = e.tolerance; });
             tolerance = max_value(tolerance, default_tolerance);
-            pack new_a = lo_state;
-            pack new_b = b_state;
-            auto fn = [&](T u) -> T {
+            // The bracket's ends move as the finder narrows it: a_state (from lo_state) and b_state follow.
+            a_state = lo_state;
+            auto fn = [&, sign_h, side, c, t_s](T u) -> T {  // (the scalars by value: they stay in registers here)
                 const T s_trial = sign_h * u;
                 trial_state = start;
                 reset_if_any(trial);
@@ -599,9 +715,9 @@ private:
                 if (!is_finite(value)) {
                     failure = status::non_finite_event;
                 } else if (value < T(0)) {
-                    new_a = trial_state;
+                    a_state = trial_state;
                 } else {
-                    new_b = trial_state;
+                    b_state = trial_state;
                 }
                 return value;
             };
@@ -610,8 +726,6 @@ private:
             if (r.failed) return failure != status::ok ? failure : status::non_finite_event;
             a = sign_h * r.a;
             b = sign_h * r.b;
-            a_state = new_a;
-            b_state = new_b;
             if (!evaluate_all(set, t_s + b, pointers(b_state), g_b)) return status::non_finite_event;
         }
         return status::ok;
@@ -631,10 +745,11 @@ private:
             }
             event_memory<T>& m = memory[i];
             m.armed = false;
+            all_armed = false;
             m.fired += 1;
             m.last = t_star;
+            sink(fired_here, i, t_star);
             fired_here += 1;
-            sink(i, t_star);
             if (call_action<State>(e.action, t_star, y_star, seq{}) == event_result::stop) stop_index = i;
         });
     }
@@ -643,7 +758,7 @@ private:
 
 struct no_sink {
     template <class T>
-    constexpr void operator()(std::size_t, T) const noexcept {}
+    constexpr void operator()(std::size_t, std::size_t, T) const noexcept {}
 };
 
 // How many state objects an event set's functions take: g(t, y) is 1, g(t, x, v) is 2.
@@ -697,12 +812,13 @@ event_integrate_result<T, Set::size> drive_events(Stepper& stepper, System& f, S
     for (std::size_t i = 0; i < n; ++i) {
         const bool last = i + 1 == n;
         const T next = last ? t1 : t0 + static_cast<T>(i + 1) * dt;  // from the counter, as in drive
-        T t_out = t;
-        const status s = engine.advance(stepper, f, set, y, t, last ? last_step(t0, t1, t, dt) : dt, next, sink,
-                                        t_out, r.event);
-        if (s != status::ok) {
-            if (s == status::stopped_by_event) observe(t_out, static_cast<const State&>(y0), static_cast<const More&>(ys)...);
-            return finish(s, t_out, i, engine);
+        const advance_result<T> a =
+            engine.advance(stepper, f, set, y, t, last ? last_step(t0, t1, t, dt) : dt, next, sink);
+        if (a.code != status::ok) {
+            r.event = a.event;
+            if (a.code == status::stopped_by_event)
+                observe(a.t, static_cast<const State&>(y0), static_cast<const More&>(ys)...);
+            return finish(a.code, a.t, i, engine);
         }
         observe(next, static_cast<const State&>(y0), static_cast<const More&>(ys)...);
         t = next;
@@ -798,8 +914,8 @@ public:
         t0_ = t0;
         dt_ = dt;
         n_ = 0;
-        off_grid_ = false;
-        started_ = true;
+        t_now_ = t0_ + static_cast<value_type>(n_) * dt_;  // t0 + 0 dt, as every grid time is computed
+        clock_ = clock_state::on_grid;
         return status::ok;
     }
 
@@ -808,7 +924,7 @@ public:
     template <class... States>
     [[nodiscard]] status rearm(const States&... y) {
         static_assert(sizeof...(States) == arity, "odestep: rearm(y) (Newtonian: rearm(x, v))");
-        if (!started_) return status::invalid_time;
+        if (clock_ == clock_state::idle) return status::invalid_time;
         const std::array<const state_type*, arity> ptrs{&y...};
         const auto kept = engine_.memory;
         const status s = engine_.begin(set_, time(), ptrs);
@@ -825,48 +941,74 @@ public:
     }
 
     /// One tick: to the next grid time t0 + (n+1) dt. Before `start`: status::invalid_time, nothing touched.
+    // (Always inlined: the caller's frame then holds the quiet tick's few values, and the rare path's frame,
+    // advance_rest, is the only other one on the stack.)
     template <class System, class... States>
-    [[nodiscard]] tick_result<value_type, Capacity> tick(System&& f, States&... y) {
+    [[nodiscard]] ODESTEP_INLINE tick_result<value_type, Capacity> tick(System&& f, States&... y) {
         static_assert(sizeof...(States) == arity, "odestep: tick(f, y) (Newtonian: tick(a, x, v))");
         using T = value_type;
         tick_result<T, Capacity> r;  // firings past `fired` stay unwritten: clearing them cost most of a quiet tick
         r.status = status::ok;
-        r.t = time();
+        r.t = t_now_;
         r.fired = 0;
         r.event = no_event;
-        if (!started_) {
-            r.status = status::invalid_time;
-            return r;
-        }
-        const T t_start = time();
-        const T t_end = t0_ + static_cast<T>(n_ + 1) * dt_;
-        const T h = off_grid_ ? t_end - t_start : dt_;
-        if (h == T(0)) {  // an earlier tick stopped on this grid time
-            ++n_;
-            off_grid_ = false;
-            r.t = t_end;
-            return r;
+        // The time of the state (t_now_) is the last tick's end, or where a tick stopped; the tick's end is
+        // converted from the counter after the step (on the grid nothing is kept across the step's call).
+        T h = dt_;
+        if (ODESTEP_UNLIKELY(clock_ != clock_state::on_grid)) {
+            if (clock_ == clock_state::idle) {
+                r.status = status::invalid_time;
+                return r;
+            }
+            const T t_end = grid_time();
+            h = t_end - t_now_;  // off the grid: back to it
+            if (h == T(0)) {     // an earlier tick stopped on this grid time
+                ++n_;
+                clock_ = clock_state::on_grid;
+                t_now_ = t_end;
+                r.t = t_end;
+                return r;
+            }
         }
         const std::array<state_type*, arity> ptrs{&y...};
-        auto sink = [&r](std::size_t i, T t) {
-            if (r.fired < Capacity) r.firings[r.fired] = event_firing<T>{i, t};
-            ++r.fired;
-        };
-        T t_out = t_start;
-        r.status = engine_.advance(stepper_, f, set_, ptrs, t_start, h, t_end, sink, t_out, r.event);
-        r.t = t_out;
-        if (r.status == status::ok) {
-            ++n_;
-            off_grid_ = false;
-        } else if (!(t_out == t_start)) {
-            off_grid_ = true;
-            t_now_ = t_out;
+        typename engine_type::pack start;
+        r.status = engine_type::step(stepper_, f, ptrs, t_now_, h, start);
+        if (ODESTEP_UNLIKELY(r.status != status::ok)) return r;  // y untouched, at t_now_
+        const T t_end = grid_time();
+        typename engine_type::values g;
+        if (ODESTEP_UNLIKELY(!engine_.settle(set_, ptrs, t_end, g))) {
+            // The firings go to the loop's own list, and are copied into r when there are some: with r's
+            // address in the call, every quiet tick would keep r in memory.
+            auto sink = [this](std::size_t k, std::size_t i, T t) {
+                if (k < Capacity) firings_[k] = event_firing<T>{i, t};
+            };
+            const T t_start = t_now_;
+            h = clock_ == clock_state::on_grid ? dt_ : t_end - t_start;  // as above
+            const detail::advance_result<T> a =
+                engine_.advance_rest(stepper_, f, set_, ptrs, start, g, t_start, h, t_end, sink);
+            r.status = a.code;
+            r.t = a.t;
+            r.fired = a.fired;
+            r.event = a.event;
+            for (std::size_t k = 0; k < a.fired && k < Capacity; ++k) r.firings[k] = firings_[k];
+            t_now_ = a.t;
+            if (a.code == status::ok) {
+                ++n_;
+                clock_ = clock_state::on_grid;
+            } else if (!(a.t == t_start)) {
+                clock_ = clock_state::off_grid;
+            }
+            return r;
         }
+        ++n_;
+        clock_ = clock_state::on_grid;
+        t_now_ = t_end;
+        r.t = t_end;
         return r;
     }
 
     /// The time of the state: t0 + n dt, or the time a tick stopped at.
-    constexpr value_type time() const noexcept { return off_grid_ ? t_now_ : t0_ + static_cast<value_type>(n_) * dt_; }
+    constexpr value_type time() const noexcept { return t_now_; }
     /// Completed ticks.
     constexpr std::size_t ticks() const noexcept { return n_; }
     /// Firings of event i since start.
@@ -875,15 +1017,23 @@ public:
     Set& events() noexcept { return set_; }
 
 private:
+    // The end of the tick being taken, t0 + (n+1) dt, from the counter.
+    value_type grid_time() const noexcept { return t0_ + static_cast<value_type>(n_ + 1) * dt_; }
+
+    // idle: before start; on_grid: the state is at t0 + n dt; off_grid: a tick stopped between grid times.
+    enum class clock_state : unsigned char { idle, on_grid, off_grid };
+
     Stepper stepper_;
     Set set_;
-    detail::event_engine<state_type, arity, Set> engine_{};
+    using engine_type = detail::event_engine<state_type, arity, Set>;
+    engine_type engine_{};
     value_type t0_ = value_type(0);
     value_type dt_ = value_type(0);
-    value_type t_now_ = value_type(0);
+    value_type t_now_ = value_type(0);  // the time of the state: t0 + n dt computed at the last tick's end
     std::size_t n_ = 0;
-    bool off_grid_ = false;
-    bool started_ = false;
+    clock_state clock_ = clock_state::idle;
+    // The firings of a tick that had some (its first Capacity), copied into its tick_result.
+    std::array<event_firing<value_type>, Capacity> firings_{};
 };
 
 /// make_event_stepper(stepper, watch(...)) with the default capacity; make_event_stepper<16>(...) lists up
