@@ -7,8 +7,11 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 namespace {
 
@@ -463,6 +466,105 @@ TEST_CASE("events: after a terminal tick the next tick goes from the event back 
     state1 z{0.25};
     CHECK(fresh.tick(clock_rhs{}, z).status == odestep::status::invalid_time);
     CHECK(z[0] == 0.25);
+}
+
+TEST_CASE("events: rearm measures crossings from the caller's new state and keeps max_firings and the dead time") {
+    auto top = [](double, const state1& y) { return y[0] - 1.0; };
+    auto reset = [](double, state1& y) { y[0] = 0.0; };
+    const auto ev = odestep::make_event<state1>(top, odestep::direction::rising, reset);
+    // The caller moves y across the zero between ticks (0.3 -> 2): without rearm the next tick sees g go from
+    // -0.7 to +1.3 and fires; with it, g is measured from +1 and nothing fires.
+    for (const bool reread : {false, true}) {
+        auto loop = odestep::make_event_stepper(odestep::rk4<state1>{}, odestep::watch(ev));
+        state1 y{0.0};
+        REQUIRE(loop.start(0.0, 0.3, y) == odestep::status::ok);
+        REQUIRE(loop.tick(clock_rhs{}, y).status == odestep::status::ok);
+        y[0] = 2.0;
+        if (reread) REQUIRE(loop.rearm(y) == odestep::status::ok);
+        const auto r = loop.tick(clock_rhs{}, y);
+        CHECK(r.status == odestep::status::ok);
+        CHECK(r.fired == (reread ? 0u : 1u));
+    }
+    // max_firings(1): fired at t = 1 (y reset to 0); the caller sets y = 0.5 and rearms at t = 1.2. y reaches
+    // 1 again at t = 1.7, and the event, used up, stays quiet.
+    {
+        auto loop = odestep::make_event_stepper(odestep::rk4<state1>{}, odestep::watch(ev.with_max_firings(1)));
+        state1 y{0.0};
+        REQUIRE(loop.start(0.0, 0.3, y) == odestep::status::ok);
+        for (int n = 0; n < 4; ++n) REQUIRE(loop.tick(clock_rhs{}, y).status == odestep::status::ok);
+        REQUIRE(loop.firings(0) == 1);
+        y[0] = 0.5;
+        REQUIRE(loop.rearm(y) == odestep::status::ok);
+        for (int n = 0; n < 6; ++n) CHECK(loop.tick(clock_rhs{}, y).fired == 0);
+        CHECK(loop.firings(0) == 1);
+        CHECK(y[0] == doctest::Approx(2.3));  // 0.5 at t = 1.2, then y' = 1 to t = 3
+    }
+    // dead time 1: fired at t = 1; the caller sets y = 0.9 and rearms at t = 1.2. y reaches 1 at t = 1.3,
+    // inside the dead time, so the event is not armed there; it re-arms at t = 2.1, above its zero, and y
+    // never comes back below it.
+    {
+        auto loop = odestep::make_event_stepper(odestep::rk4<state1>{}, odestep::watch(ev.with_dead_time(1.0)));
+        state1 y{0.0};
+        REQUIRE(loop.start(0.0, 0.3, y) == odestep::status::ok);
+        for (int n = 0; n < 4; ++n) REQUIRE(loop.tick(clock_rhs{}, y).status == odestep::status::ok);
+        REQUIRE(loop.firings(0) == 1);
+        y[0] = 0.9;
+        REQUIRE(loop.rearm(y) == odestep::status::ok);
+        for (int n = 0; n < 6; ++n) CHECK(loop.tick(clock_rhs{}, y).fired == 0);
+        CHECK(loop.firings(0) == 1);
+    }
+    // A NaN from g on rearm: a status, and the events' memory is untouched (the next tick still fires from
+    // the last tick's values).
+    {
+        auto loop = odestep::make_event_stepper(odestep::rk4<state1>{}, odestep::watch(ev));
+        state1 y{0.0};
+        REQUIRE(loop.start(0.0, 0.3, y) == odestep::status::ok);
+        for (int n = 0; n < 3; ++n) REQUIRE(loop.tick(clock_rhs{}, y).status == odestep::status::ok);  // t = 0.9
+        const state1 bad{std::numeric_limits<double>::quiet_NaN()};
+        CHECK(loop.rearm(bad) == odestep::status::non_finite_event);
+        const auto r = loop.tick(clock_rhs{}, y);  // 0.9 -> 1.2: crosses at 1
+        CHECK(r.fired == 1);
+        CHECK(std::abs(r.firings[0].t - 1.0) <= 64 * eps);
+    }
+}
+
+TEST_CASE("events: g values whose products underflow or overflow still give the right crossings") {
+    // The quiet tick's test multiplies each g by its last value. Scaled by 1e-200 the products underflow to
+    // zero, scaled by 1e200 they overflow to Inf; either sends the tick to the full test, which must find the
+    // one crossing at t = 5 (y' = 1 from 0) and no NaN.
+    for (const double scale : {1e-200, 1e200}) {
+        auto g = [scale](double, const state1& y) { return scale * (y[0] - 5.0); };
+        auto loop = odestep::make_event_stepper(odestep::rk4<state1>{},
+                                                odestep::watch(odestep::make_event<state1>(g, odestep::direction::rising, odestep::record)));
+        state1 y{0.0};
+        REQUIRE(loop.start(0.0, 0.25, y) == odestep::status::ok);
+        std::size_t fired = 0;
+        for (int n = 0; n < 40; ++n) {
+            const auto r = loop.tick(clock_rhs{}, y);
+            REQUIRE(r.status == odestep::status::ok);
+            if (r.fired) {
+                ++fired;
+                CHECK(std::abs(r.firings[0].t - 5.0) <= 64 * eps * 5.0);
+            }
+        }
+        CHECK(fired == 1);
+        CHECK(y[0] == 10.0);  // 40 ticks of 0.25, exact
+    }
+}
+
+TEST_CASE("events: the tick counter has 64 bits on every target, and its time conversion is exact to one rounding") {
+    using loop_type = decltype(odestep::make_event_stepper(
+        odestep::rk4<state1>{}, odestep::watch(odestep::make_event<state1>(clock_rhs{}, odestep::direction::rising))));
+    static_assert(std::is_same_v<decltype(std::declval<const loop_type&>().ticks()), std::uint64_t>);
+    // The split conversion (a 32-bit target's) against integers exact in double: below 2^32 the low half's,
+    // above it hi 2^32 + lo.
+    CHECK(odestep::detail::tick_count_halves<double>(4294967295u) == 4294967295.0);
+    CHECK(odestep::detail::tick_count_halves<double>((std::uint64_t{1} << 32) + 5) == 4294967301.0);
+    CHECK(odestep::detail::tick_count_halves<double>((std::uint64_t{3} << 40) + 7) == 3298534883335.0);
+    CHECK(odestep::detail::tick_count_value<double>((std::uint64_t{3} << 40) + 7) == 3298534883335.0);
+    // float: 2^33 + 1 is not a float; its nearest is 2^33.
+    CHECK(odestep::detail::tick_count_halves<float>((std::uint64_t{1} << 33) + 1) == 8589934592.0f);
+    CHECK(odestep::detail::tick_count_halves<float>(16777217u) == static_cast<float>(16777217u));
 }
 
 TEST_CASE("events: the published bound on right-hand-side evaluations per step holds in the worst case") {

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <tuple>
 #include <type_traits>
@@ -325,6 +326,22 @@ public:
         if (!evaluate_all(set, t0, y, g)) return status::non_finite_event;
         for (std::size_t i = 0; i < E; ++i) memory[i] = event_memory<T>{g[i], t0, 0, false};
         rearm(set, t0, g);
+        return status::ok;
+    }
+
+    // After the caller changed the state: every g read again at t, and every event disarmed and then armed
+    // by the usual rule, so a crossing is measured from the new values and the firing counts, max_firings
+    // and the dead time still hold. On a failure nothing is changed.
+    template <class Ptrs>
+    status reread(set_type& set, T t, const Ptrs& y) {
+        if (!settings_valid(set)) return status::invalid_tolerance;
+        values g{};
+        if (!evaluate_all(set, t, y, g)) return status::non_finite_event;
+        for (std::size_t i = 0; i < E; ++i) {
+            memory[i].g = g[i];
+            memory[i].armed = false;
+        }
+        rearm(set, t, g);
         return status::ok;
     }
 
@@ -756,6 +773,27 @@ private:
 };
 
 
+// A tick count as T, for t0 + n dt. Where std::size_t has 64 bits this is the one conversion. On a 32-bit
+// target a 64-bit integer to floating-point conversion is a library call, so the count is converted as two
+// 32-bit halves: while the high half is zero (the first 2^32 ticks) the result is the low half's hardware
+// conversion, the same as a 32-bit count's; after, hi 2^32 + lo, within one rounding of the exact value.
+template <class T>
+ODESTEP_INLINE constexpr T tick_count_halves(std::uint64_t n) noexcept {
+    const auto lo = static_cast<std::uint32_t>(n);
+    const auto hi = static_cast<std::uint32_t>(n >> 32);
+    if (ODESTEP_UNLIKELY(hi != 0)) return static_cast<T>(hi) * T(4294967296.0L) + static_cast<T>(lo);  // 2^32
+    return static_cast<T>(lo);
+}
+
+template <class T>
+ODESTEP_INLINE constexpr T tick_count_value(std::uint64_t n) noexcept {
+    if constexpr (sizeof(std::size_t) >= sizeof(std::uint64_t)) {
+        return static_cast<T>(n);
+    } else {
+        return tick_count_halves<T>(n);
+    }
+}
+
 struct no_sink {
     template <class T>
     constexpr void operator()(std::size_t, std::size_t, T) const noexcept {}
@@ -914,28 +952,22 @@ public:
         t0_ = t0;
         dt_ = dt;
         n_ = 0;
-        t_now_ = t0_ + static_cast<value_type>(n_) * dt_;  // t0 + 0 dt, as every grid time is computed
+        t_now_ = t0_ + detail::tick_count_value<value_type>(n_) * dt_;  // t0 + 0 dt, as every grid time
         clock_ = clock_state::on_grid;
         return status::ok;
     }
 
     /// Re-reads every event function at the current time, after the caller changed the state, and resets
-    /// the stepper's history. Firing counts are kept.
+    /// the stepper's history. Firing counts are kept, and with them max_firings and the dead time: an event
+    /// that has used up its firings stays quiet. On a failure (non_finite_event, invalid_tolerance) nothing
+    /// changes.
     template <class... States>
     [[nodiscard]] status rearm(const States&... y) {
         static_assert(sizeof...(States) == arity, "odestep: rearm(y) (Newtonian: rearm(x, v))");
         if (clock_ == clock_state::idle) return status::invalid_time;
         const std::array<const state_type*, arity> ptrs{&y...};
-        const auto kept = engine_.memory;
-        const status s = engine_.begin(set_, time(), ptrs);
-        if (s != status::ok) {
-            engine_.memory = kept;
-            return s;
-        }
-        for (std::size_t i = 0; i < Set::size; ++i) {
-            engine_.memory[i].fired = kept[i].fired;
-            engine_.memory[i].last = kept[i].last;
-        }
+        const status s = engine_.reread(set_, time(), ptrs);
+        if (s != status::ok) return s;
         detail::reset_if_any(stepper_);
         return status::ok;
     }
@@ -1010,7 +1042,7 @@ public:
     /// The time of the state: t0 + n dt, or the time a tick stopped at.
     constexpr value_type time() const noexcept { return t_now_; }
     /// Completed ticks.
-    constexpr std::size_t ticks() const noexcept { return n_; }
+    constexpr std::uint64_t ticks() const noexcept { return n_; }
     /// Firings of event i since start.
     constexpr std::size_t firings(std::size_t i) const noexcept { return engine_.memory[i].fired; }
     Stepper& stepper() noexcept { return stepper_; }
@@ -1018,7 +1050,7 @@ public:
 
 private:
     // The end of the tick being taken, t0 + (n+1) dt, from the counter.
-    value_type grid_time() const noexcept { return t0_ + static_cast<value_type>(n_ + 1) * dt_; }
+    value_type grid_time() const noexcept { return t0_ + detail::tick_count_value<value_type>(n_ + 1) * dt_; }
 
     // idle: before start; on_grid: the state is at t0 + n dt; off_grid: a tick stopped between grid times.
     enum class clock_state : unsigned char { idle, on_grid, off_grid };
@@ -1030,7 +1062,7 @@ private:
     value_type t0_ = value_type(0);
     value_type dt_ = value_type(0);
     value_type t_now_ = value_type(0);  // the time of the state: t0 + n dt computed at the last tick's end
-    std::size_t n_ = 0;
+    std::uint64_t n_ = 0;  // 64 bits on every target: a 32-bit count wraps after 49.7 days of 1 kHz ticks
     clock_state clock_ = clock_state::idle;
     // The firings of a tick that had some (its first Capacity), copied into its tick_result.
     std::array<event_firing<value_type>, Capacity> firings_{};
