@@ -32,6 +32,9 @@ BENCH_STEP int bench_step_kepler_euler_cromer_hand(State& y, State&, double t, d
     bench::hand::euler_cromer(hand_force, y.first, y.second, t, dt);
     return 0;
 }
+BENCH_STEP int bench_step_kepler_euler_cromer_hand_checked(State& y, State&, double t, double dt) {
+    return bench::hand::euler_cromer_checked(hand_force, y.first, y.second, t, dt);
+}
 BENCH_STEP int bench_step_kepler_euler_cromer_odeint(State& y, State&, double t, double dt) {
     std::pair<vec, vec>& xv = y;  // Odeint's state for its symplectic steppers: the pair (positions, momenta)
     odeint_se.do_step(odeint_force, xv, t, dt);
@@ -55,6 +58,10 @@ int main(int argc, char** argv) {
           bench_step_kepler_euler_cromer_odestep, true},
          {"hand", "hand-written Euler-Cromer loop (kick, then drift with the new v)",
           bench_step_kepler_euler_cromer_hand, true},
+         {"hand_checked",
+          "the hand loop, checked: NaN/Inf in the new x or v fails the step, which is rolled back (hand.hpp "
+          "euler_cromer_checked)",
+          bench_step_kepler_euler_cromer_hand_checked, true},
          {"odeint",
           "Odeint symplectic_euler<std::array<double, 2>> do_step on std::pair (x, v) (drift then kick: the adjoint)",
           bench_step_kepler_euler_cromer_odeint, false}});

@@ -35,6 +35,9 @@ BENCH_STEP int bench_step_kepler_forest_ruth_hand(State& y, State&, double t, do
     bench::hand::forest_ruth(hand_force, y.first, y.second, t, dt);
     return 0;
 }
+BENCH_STEP int bench_step_kepler_forest_ruth_hand_checked(State& y, State&, double t, double dt) {
+    return bench::hand::forest_ruth_checked(hand_force, y.first, y.second, t, dt);
+}
 BENCH_STEP int bench_step_kepler_forest_ruth_odeint(State& y, State&, double t, double dt) {
     std::pair<vec, vec>& xv = y;  // Odeint's state for its symplectic steppers: the pair (positions, momenta)
     odeint_mclachlan.do_step(odeint_force, xv, t, dt);
@@ -57,6 +60,10 @@ int main(int argc, char** argv) {
           bench_step_kepler_forest_ruth_odestep, true},
          {"hand", "hand-written Forest-Ruth, the 7 updates written out (3 evaluations)",
           bench_step_kepler_forest_ruth_hand, true},
+         {"hand_checked",
+          "the hand loop, checked: NaN/Inf in the new x or v fails the step, which is rolled back (hand.hpp "
+          "forest_ruth_checked)",
+          bench_step_kepler_forest_ruth_hand_checked, true},
          {"odeint",
           "Odeint symplectic_rkn_sb3a_m4_mclachlan on std::pair (x, v) (no Forest-Ruth in Odeint; 5 evaluations)",
           bench_step_kepler_forest_ruth_odeint, false}});

@@ -26,6 +26,9 @@ BENCH_STEP int bench_step_kepler_position_verlet_hand(State& y, State&, double t
     bench::hand::position_verlet(hand_force, y.first, y.second, t, dt);
     return 0;
 }
+BENCH_STEP int bench_step_kepler_position_verlet_hand_checked(State& y, State&, double t, double dt) {
+    return bench::hand::position_verlet_checked(hand_force, y.first, y.second, t, dt);
+}
 
 int main(int argc, char** argv) {
     const bench::problem<State> p = bench::kepler_case::problem("kepler_position_verlet",
@@ -41,5 +44,9 @@ int main(int argc, char** argv) {
         {{"odestep", "odestep::position_verlet<std::array<double, 2>> step(a, x, v, t, dt)",
           bench_step_kepler_position_verlet_odestep, true},
          {"hand", "hand-written position Verlet loop (half drift, kick, half drift)",
-          bench_step_kepler_position_verlet_hand, true}});
+          bench_step_kepler_position_verlet_hand, true},
+         {"hand_checked",
+          "the hand loop, checked: NaN/Inf in the new x or v fails the step, which is rolled back (hand.hpp "
+          "position_verlet_checked)",
+          bench_step_kepler_position_verlet_hand_checked, true}});
 }

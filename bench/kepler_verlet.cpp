@@ -22,11 +22,13 @@ constexpr auto odeint_force = [](const vec& x, const vec&, vec& a, double) { ben
 odestep::velocity_verlet<vec> odestep_vv;
 vec odestep_acc;  // odestep's explicit form: the caller keeps a(t, x), as the hand loop does
 vec hand_acc;     // the hand loop's kept acceleration, a(x) of the current x
+vec hand_checked_acc;  // the checked hand loop's, likewise
 boost::numeric::odeint::velocity_verlet<vec> odeint_vv;
 
 void start_odestep(const State& y0, double t0) { odestep_acc = force(t0, y0.first); }
 void start_odestep_kept(const State&, double) { odestep_vv.reset(); }
 void start_hand(const State& y0, double t0) { hand_force(t0, y0.first, hand_acc); }
+void start_hand_checked(const State& y0, double t0) { hand_force(t0, y0.first, hand_checked_acc); }
 void start_odeint(const State&, double) { odeint_vv.reset(); }
 }  // namespace
 
@@ -39,6 +41,9 @@ BENCH_STEP int bench_step_kepler_verlet_odestep_kept(State& y, State&, double t,
 BENCH_STEP int bench_step_kepler_verlet_hand(State& y, State&, double t, double dt) {
     bench::hand::velocity_verlet(hand_force, y.first, y.second, hand_acc, t, dt);
     return 0;
+}
+BENCH_STEP int bench_step_kepler_verlet_hand_checked(State& y, State&, double t, double dt) {
+    return bench::hand::velocity_verlet_checked(hand_force, y.first, y.second, hand_checked_acc, t, dt);
 }
 BENCH_STEP int bench_step_kepler_verlet_odeint(State& y, State&, double t, double dt) {
     std::pair<vec, vec>& xv = y;  // Odeint's state for its velocity_verlet: the pair (positions, velocities)
@@ -63,6 +68,10 @@ int main(int argc, char** argv) {
           bench_step_kepler_verlet_odestep_kept, true, start_odestep_kept},
          {"hand", "hand-written velocity Verlet loop, acceleration kept", bench_step_kepler_verlet_hand, true,
           start_hand},
+         {"hand_checked",
+          "the hand loop, checked: NaN/Inf in the new x or v fails the step; x, v and the kept acceleration are "
+          "left as they were (hand.hpp velocity_verlet_checked)",
+          bench_step_kepler_verlet_hand_checked, true, start_hand_checked},
          {"odeint", "Odeint velocity_verlet<std::array<double, 2>> do_step on std::pair (x, v)",
           bench_step_kepler_verlet_odeint, true, start_odeint}});
 }

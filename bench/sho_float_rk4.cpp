@@ -20,6 +20,9 @@ BENCH_STEP int bench_step_sho_float_rk4_hand(State& y, State&, float t, float dt
     bench::hand::rk4(rhs, y, t, dt);
     return 0;
 }
+BENCH_STEP int bench_step_sho_float_rk4_hand_checked(State& y, State&, float t, float dt) {
+    return bench::hand::rk4_checked(rhs, y, t, dt);
+}
 BENCH_STEP int bench_step_sho_float_rk4_odeint(State& y, State&, float t, float dt) {
     odeint_rk4.do_step(odeint_rhs, y, t, dt);
     return 0;
@@ -39,6 +42,10 @@ int main(int argc, char** argv) {
                               {{"odestep", "odestep::rk4<std::array<float, 2>>", bench_step_sho_float_rk4_odestep,
                                 true},
                                {"hand", "hand-written RK4 loop, float", bench_step_sho_float_rk4_hand, true},
+                               {"hand_checked",
+                                "the hand loop, checked: NaN/Inf in the new y fails the step, which is rolled back "
+                                "(hand.hpp rk4_checked)",
+                                bench_step_sho_float_rk4_hand_checked, true},
                                {"odeint", "Odeint runge_kutta4<std::array<float, 2>, float> do_step",
                                 bench_step_sho_float_rk4_odeint, true}});
 }

@@ -25,6 +25,9 @@ BENCH_STEP int bench_step_threebody_rk4_hand(State& y, State&, double t, double 
     bench::hand::rk4(rhs, y, t, dt);
     return 0;
 }
+BENCH_STEP int bench_step_threebody_rk4_hand_checked(State& y, State&, double t, double dt) {
+    return bench::hand::rk4_checked(rhs, y, t, dt);
+}
 BENCH_STEP int bench_step_threebody_rk4_odeint(State& y, State&, double t, double dt) {
     odeint_rk4.do_step(odeint_rhs, y, t, dt);
     return 0;
@@ -48,6 +51,10 @@ int main(int argc, char** argv) {
     return bench::main<State>(argc, argv, p,
                               {{"odestep", "odestep::rk4", bench_step_threebody_rk4_odestep, true},
                                {"hand", "hand-written RK4 loop", bench_step_threebody_rk4_hand, true},
+                               {"hand_checked",
+                                "the hand loop, checked: NaN/Inf in the new y fails the step, which is rolled back "
+                                "(hand.hpp rk4_checked)",
+                                bench_step_threebody_rk4_hand_checked, true},
                                {"odeint", "Odeint runge_kutta4<std::array> do_step",
                                 bench_step_threebody_rk4_odeint, true},
                                {"gsl", "GSL rk4 (step doubling: 11 f evaluations, error estimate)",
