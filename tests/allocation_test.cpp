@@ -172,6 +172,10 @@ std::size_t allocations_of_event_calls() {
         vec v{T(0)};
         if (loop.start(T(0), T(0.01), x, v) == odestep::status::ok)
             for (int n = 0; n < 200; ++n) (void)loop.tick(a, x, v);
+        // rearm after the caller moved the state, and one refused (a NaN position: g is NaN)
+        x = {T(2)};
+        (void)loop.rearm(x, v);
+        (void)loop.rearm(vec{std::numeric_limits<T>::quiet_NaN()}, v);
     }
     // the multistep restart after a state change
     state2 s{T(1), T(0)};
