@@ -52,9 +52,11 @@ inline bool each_finite(std::array<T, N> a) {
 /// components summed past the largest finite value, is each component tested on its own. Measured (GCC 12,
 /// instructions per step, the seven hand_checked cases at -O2 and -Os) against std::isfinite on every
 /// component, no sum: that costs 3 to 7 instructions more per step on the Kepler steps that test x alone,
-/// the oscillator and Lorenz, 16 to 23 in kepler_verlet, 58 to 71 on the three-body problem.
+/// the oscillator and Lorenz, 16 to 23 in kepler_verlet, 58 to 71 on the three-body problem. Always
+/// inlined, as it would be written by hand: GCC at -Os makes a function called from two places a call (the
+/// first step of beeman_checked is velocity_verlet_checked), and values live across a call spill.
 template <class T, std::size_t... N>
-inline bool finite_state(T s, const std::array<T, N>&... parts) {
+[[gnu::always_inline]] inline bool finite_state(T s, const std::array<T, N>&... parts) {
     const T z = s - s;
     return z == z || (each_finite(parts) && ...);
 }
@@ -479,6 +481,34 @@ inline void beeman(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, 
     for (std::size_t i = 0; i < N; ++i) v[i] += h6 * (T(2) * acc_new[i] + T(5) * acc[i] - acc_prev[i]);
     acc_prev = acc;
     acc = acc_new;
+}
+
+/// beeman, checked: the same arithmetic into locals xn, vn, an; x, v, acc and acc_prev written only if the
+/// new x and v are finite (a_new needs no test: v_new is NaN or Inf whenever it is, as in
+/// velocity_verlet_checked). The first step is velocity_verlet_checked. On failure x, v, acc, acc_prev and
+/// started are untouched. Returns 0 or non_finite.
+template <class T, std::size_t N, class F>
+inline int beeman_checked(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, N>& acc,
+                          std::array<T, N>& acc_prev, bool& started, T t, T h) {
+    if (!started) {
+        const std::array<T, N> a0 = acc;
+        if (velocity_verlet_checked(f, x, v, acc, t, h) != ok) return non_finite;
+        acc_prev = a0;
+        started = true;
+        return ok;
+    }
+    const T hh6 = h * h * (T(1) / T(6));
+    const T h6 = h * (T(1) / T(6));
+    std::array<T, N> xn, vn, an;
+    for (std::size_t i = 0; i < N; ++i) xn[i] = x[i] + (h * v[i] + hh6 * (T(4) * acc[i] - acc_prev[i]));
+    f(t + h, xn, an);
+    for (std::size_t i = 0; i < N; ++i) vn[i] = v[i] + h6 * (T(2) * an[i] + T(5) * acc[i] - acc_prev[i]);
+    if (!finite_state(sum(xn) + sum(vn), xn, vn)) return non_finite;
+    x = xn;
+    v = vn;
+    acc_prev = acc;
+    acc = an;
+    return ok;
 }
 
 }  // namespace bench::hand

@@ -87,6 +87,17 @@ std::size_t allocations_of_newtonian_calls() {
     };
     run_caller_kept(odestep::velocity_verlet<vec>{});
     run_caller_kept(odestep::blanes_moan4<vec>{});
+    // Beeman's form with the history kept by the caller: a self-starting step, a continuing one, a failing one
+    {
+        const odestep::beeman<vec> stepper;
+        vec x{T(1), T(0)};
+        vec v{T(0), T(1)};
+        typename odestep::beeman<vec>::history hist{};
+        (void)stepper.step(spring, x, v, hist, T(0), T(0.01));
+        (void)stepper.step(spring, x, v, hist, T(0.01), T(0.01));
+        auto poison = [](T, const vec&) { return vec{std::numeric_limits<T>::quiet_NaN(), T(0)}; };
+        (void)stepper.step(poison, x, v, hist, T(0.02), T(0.01));
+    }
     return odestep_test::allocations() - before;
 }
 

@@ -63,6 +63,16 @@ T run_everything() {
     };
     add_caller_kept(odestep::velocity_verlet<vec>{});
     add_caller_kept(odestep::blanes_moan4<vec>{});
+    // Beeman's form with a_n and a_{n-1} kept by the caller
+    {
+        const odestep::beeman<vec> stepper;
+        vec x{T(1), T(0)};
+        vec v{T(0), T(1)};
+        typename odestep::beeman<vec>::history hist{};
+        for (int i = 0; i < 8; ++i)
+            if (stepper.step(spring, x, v, hist, T(i) * T(0.125), T(0.125)) != odestep::status::ok) break;
+        sum += x[0] + hist.acc_prev[1];
+    }
     // and the Boris pushers
     using vec3 = std::array<T, 3>;
     auto fields = [](T, const vec3& x, vec3& E, vec3& B) {

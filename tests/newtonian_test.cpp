@@ -321,3 +321,109 @@ TEST_CASE("newtonian: a velocity-dependent force works with the methods that acc
     REQUIRE(odestep::integrate(odestep::predictor_corrector<std::array<double, 1>>{}, damped, x, v, 0.0, t_end, 0.001).status == odestep::status::ok);
     CHECK(x[0] == doctest::Approx(exact).epsilon(1e-6));
 }
+
+// ---------------------------------------------------------------------------------------------------------
+// Beeman with its history kept by the caller: step(a, x, v, hist, t, dt)
+
+TEST_CASE("beeman, caller's history: exact under a constant force, and the history holds a_n and a_{n-1}") {
+    // x'' = -g: Beeman's formulas with a_n = a_{n-1} = -g are x1 = x0 + v0 h - g h^2/2 and v1 = v0 - g h, and
+    // its self-starting velocity Verlet step is the same, so after n steps x = x0 + v0 t - g t^2/2 and
+    // v = v0 - g t, t = n h. h = 3/32 makes h^2/6 = 3/2048, h/6 = 1/64 and h/2 exact, and every intermediate
+    // a dyadic rational of fewer than 53 bits: exact, with ==.
+    using S = std::array<double, 1>;
+    const double g = 9.75;  // 39/4
+    std::size_t calls = 0;
+    auto gravity = [&calls, g](double, const S&) {
+        ++calls;
+        return S{-g};
+    };
+    const odestep::beeman<S> stepper;  // const: the caller keeps everything
+    odestep::beeman<S>::history hist{};
+    CHECK_FALSE(hist.started);
+    S x{100.0};
+    S v{12.5};
+    const double h = 0.09375;
+    for (int n = 1; n <= 64; ++n) {
+        REQUIRE(stepper.step(gravity, x, v, hist, (n - 1) * h, h) == odestep::status::ok);
+        const double t = n * h;
+        CHECK(x[0] == 100.0 + 12.5 * t - g * t * t / 2.0);
+        CHECK(v[0] == 12.5 - g * t);
+        CHECK(hist.started);
+        CHECK(hist.acc[0] == -g);
+        CHECK(hist.acc_prev[0] == -g);
+    }
+    CHECK(calls == 65);  // two evaluations on the self-starting step, one on each of the other 63
+}
+
+TEST_CASE("beeman, caller's history: bit for bit the stepper-kept form's steps, restarts included") {
+    std::size_t calls = 0;
+    auto a = [&calls](double t, const vec2<double>& x) {
+        ++calls;
+        return kepler{}(t, x);
+    };
+    odestep::beeman<vec2<double>> kept;
+    const odestep::beeman<vec2<double>> caller_form;
+    odestep::beeman<vec2<double>>::history hist{};
+    vec2<double> x{1.0, 0.0}, v{0.0, 1.0};
+    vec2<double> y = x, w = v;
+    const double dt = 0.01;
+    for (int i = 0; i < 300; ++i) {
+        if (i == 150) {  // a restart in both: the next step self-starts again
+            kept.reset();
+            hist = {};
+        }
+        REQUIRE(kept.step(a, x, v, i * dt, dt) == odestep::status::ok);
+        REQUIRE(caller_form.step(a, y, w, hist, i * dt, dt) == odestep::status::ok);
+        REQUIRE(same_bits(x, y));
+        REQUIRE(same_bits(v, w));
+        // hist.acc is the force at the new position (an independent evaluation, not counted)
+        REQUIRE(same_bits(hist.acc, kepler{}(0.0, y)));
+    }
+    // each form: 2 evaluations on each of its 2 self-starting steps, 1 on the other 298
+    CHECK(calls == 2 * (2 * 2 + 298));
+    // the circular orbit x = (cos t, sin t) at t = 3, to Beeman's error (order 2, dt = 0.01: about 1e-5;
+    // the order itself is tested above with the stepper-kept form, whose steps these are)
+    CHECK(std::fabs(y[0] - std::cos(3.0)) < 1e-4);
+    CHECK(std::fabs(y[1] - std::sin(3.0)) < 1e-4);
+}
+
+TEST_CASE("beeman, caller's history: a NaN from any evaluation, or an overflow, leaves x, v and hist exactly as they were") {
+    const double qnan = std::numeric_limits<double>::quiet_NaN();
+    const odestep::beeman<vec2<double>> stepper;
+    // Poison the k-th evaluation over three steps: 1 and 2 hit the self-starting step, 3 and 4 the later
+    // ones (which make one evaluation each).
+    for (std::size_t poisoned = 1; poisoned <= 4; ++poisoned) {
+        std::size_t calls = 0;
+        auto a = [&calls, poisoned, qnan](double t, const vec2<double>& x) {
+            ++calls;
+            return calls == poisoned ? vec2<double>{x[0], qnan} : kepler{}(t, x);
+        };
+        vec2<double> x{1.0, 0.0}, v{0.0, 1.0};
+        odestep::beeman<vec2<double>>::history hist{};
+        odestep::status s = odestep::status::ok;
+        vec2<double> x_before = x, v_before = v;
+        odestep::beeman<vec2<double>>::history hist_before = hist;
+        for (int i = 0; i < 3 && s == odestep::status::ok; ++i) {
+            x_before = x;
+            v_before = v;
+            hist_before = hist;
+            s = stepper.step(a, x, v, hist, 0.1 * i, 0.1);
+        }
+        INFO("evaluation ", poisoned);
+        CHECK(s == odestep::status::non_finite);
+        CHECK(same_bits(x, x_before));
+        CHECK(same_bits(v, v_before));
+        CHECK(same_bits(hist.acc, hist_before.acc));
+        CHECK(same_bits(hist.acc_prev, hist_before.acc_prev));
+        CHECK(hist.started == hist_before.started);
+    }
+    // No force; the drift x + dt v overflows to Inf on a continuing step.
+    auto none = [](double, const vec2<double>&) { return vec2<double>{0.0, 0.0}; };
+    vec2<double> x{1e308, 0.0}, v{1e308, 1.0};
+    odestep::beeman<vec2<double>>::history hist{{0.0, 0.0}, {0.0, 0.0}, true};
+    const vec2<double> x0 = x, v0 = v;
+    CHECK(stepper.step(none, x, v, hist, 0.0, 10.0) == odestep::status::non_finite);
+    CHECK(same_bits(x, x0));
+    CHECK(same_bits(v, v0));
+    CHECK(hist.started);
+}

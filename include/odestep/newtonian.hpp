@@ -369,26 +369,70 @@ private:
 ///   v_{n+1} = v_n + (2 a_{n+1} + 5 a_n - a_{n-1}) dt / 6,
 /// self-started by one velocity Verlet step (x_1 = x_0 + v_0 dt + a_0 dt^2/2, v_1 = v_0 + (a_0 + a_1) dt/2).
 /// a_{n+1} is kept for the next step: one evaluation per step (two on the first).
+///
+/// Two forms, as velocity Verlet has (symplectic.hpp):
+/// - step(a, x, v, t, dt): the stepper keeps a_n and a_{n-1}, and checks that a step continues its history
+///   (the same position object, dt, and time, detail::continuation); a step that does not self-starts.
+/// - step(a, x, v, hist, t, dt): the caller keeps them in a `history`, as a hand-written loop keeps them
+///   next to the state. Nothing is checked: the caller promises that hist belongs to x, v and this dt. A
+///   `history{}` (started false) makes the next step a self-starting one; assign `history{}` again after
+///   changing x or v outside the stepper, the force, or dt. This step is const: one stepper serves any
+///   number of states.
 template <class State>
 class beeman : public newtonian_traits<State, 2, 2, false, false> {
 public:
     using typename newtonian_traits<State, 2, 2, false, false>::value_type;
     static constexpr bool error_estimate = false;
 
+    /// What the caller-kept form keeps between steps. On status::ok, acc is a(t + dt, x) of the new x and
+    /// acc_prev the acc it had on entry (or a(t, x) after a self-starting step), and started is true; on
+    /// status::non_finite all three are left exactly as they were.
+    struct history {
+        State acc{};           // a_n = a(t_n, x_n), when started
+        State acc_prev{};      // a_{n-1}, when started
+        bool started = false;  // false: the next step evaluates a_n itself and is a velocity Verlet step
+    };
+
     constexpr void reset() noexcept { next_.clear(); }
 
+    /// (x, v) <- (x, v)(t + dt), the history kept and checked by the stepper. On status::non_finite x and v
+    /// are left exactly as they were.
     template <class Accel>
     [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
-        using T = value_type;
         const bool continuing = next_.matches(t, dt, x);
-        const State a0 = continuing ? a_now_ : detail::acceleration(a, t, x);
+        const status s = advance(a, x, v, t, dt, continuing, kept_.acc, kept_.acc_prev);
+        if (s == status::ok) next_.expect(t, dt, x, continuing);
+        return s;
+    }
+
+    /// (x, v) <- (x, v)(t + dt), the history kept by the caller in hist (see above). On status::non_finite
+    /// x, v and hist are left exactly as they were. hist is an object of its own (not part of x or v).
+    template <class Accel>
+    [[nodiscard]] status step(Accel&& a, State& x, State& v, history& hist, value_type t, value_type dt) const {
+        const status s = advance(a, x, v, t, dt, hist.started, hist.acc, hist.acc_prev);
+        if (s == status::ok) hist.started = true;
+        return s;
+    }
+
+private:
+    history kept_{};  // the stepper-kept form's a_n and a_{n-1} (its started is not used: next_ decides)
+    detail::continuation<State> next_{};
+
+    // One step. continuing: a_now is a_n = a(t, x) and a_prev is a_{n-1}; otherwise a_n is evaluated here
+    // and the step is velocity Verlet's. On status::ok x, v are the new state, a_prev the a_n and a_now the
+    // a_{n+1} of this step; otherwise nothing is written.
+    template <class Accel>
+    ODESTEP_INLINE static status advance(Accel& a, State& x, State& v, value_type t, value_type dt, bool continuing,
+                                         State& a_now, State& a_prev) {
+        using T = value_type;
+        const State a0 = continuing ? a_now : detail::acceleration(a, t, x);
         const T dt2_6 = dt * dt / T(6);
         const T dt_6 = dt / T(6);
         // The choice made once per step, not in every component (at -Os the loops stay loops).
         State x1;
         if (continuing) {
             ODESTEP_UNROLL
-            for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + (T(4) * a0[n] - a_prev_[n]) * dt2_6;
+            for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + (T(4) * a0[n] - a_prev[n]) * dt2_6;
         } else {
             ODESTEP_UNROLL
             for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + a0[n] * (dt * dt / T(2));
@@ -398,7 +442,7 @@ public:
         if (continuing) {
             ODESTEP_UNROLL
             for (std::size_t n = 0; n < v1.size(); ++n)
-                v1[n] = v[n] + (T(2) * a1[n] + T(5) * a0[n] - a_prev_[n]) * dt_6;
+                v1[n] = v[n] + (T(2) * a1[n] + T(5) * a0[n] - a_prev[n]) * dt_6;
         } else {
             ODESTEP_UNROLL
             for (std::size_t n = 0; n < v1.size(); ++n) v1[n] = v[n] + (a0[n] + a1[n]) * (dt / T(2));
@@ -407,16 +451,10 @@ public:
         if (!detail::all_finite(x1, v1)) return status::non_finite;
         x = x1;
         v = v1;
-        a_prev_ = a0;
-        a_now_ = a1;
-        next_.expect(t, dt, x, continuing);
+        a_prev = a0;
+        a_now = a1;
         return status::ok;
     }
-
-private:
-    State a_prev_{};
-    State a_now_{};
-    detail::continuation<State> next_{};
 };
 
 /// The predictor-corrector of the course material: predict x_p = x_{n-1} + 2 v_n dt, then correct
