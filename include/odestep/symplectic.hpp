@@ -114,6 +114,18 @@ struct splitting_plan {
     /// acceleration of the last kick of one step is that of the first kick of the next.
     static constexpr bool fsal = kicks >= 2 && first < updates && is_kick(first) && is_kick(last);
 
+    /// A drift (a kick) with a coefficient not zero comes before update k.
+    static constexpr bool drift_before(std::size_t k) noexcept {
+        for (std::size_t j = 0; j < k; ++j)
+            if (!is_kick(j) && coefficient(j) != T(0)) return true;
+        return false;
+    }
+    static constexpr bool kick_before(std::size_t k) noexcept {
+        for (std::size_t j = 0; j < k; ++j)
+            if (is_kick(j) && coefficient(j) != T(0)) return true;
+        return false;
+    }
+
     /// c for update k: the drift coefficients before it, summed.
     static constexpr T time_fraction(std::size_t k) noexcept {
         T c = T(0);
@@ -172,6 +184,8 @@ private:
     static constexpr std::size_t N = state_traits<State>::size;
     static constexpr bool fsal = plan::fsal;
     static constexpr bool ends_with_kick = plan::is_kick(plan::last);
+    // The first update is a kick that evaluates the force (not a kept acceleration): see advance.
+    static constexpr bool lazy_velocity = plan::is_kick(plan::first) && !fsal;
 
 public:
     static constexpr int order = plan::tab.order;
@@ -236,14 +250,20 @@ private:
 
     // The step: the splitting of x' = v, v' = a(t, x) into the drift (x' = v, v' = 0) and the kick (x' = 0,
     // v' = a(t, x)), each solved exactly, applied in the table's order with its coefficients times dt (see
-    // splitting_table), on copies of x and v that replace them only when every component is finite.
+    // splitting_table), into new x and v that replace them only when every component is finite.
     template <class Accel>
     ODESTEP_INLINE static status advance(Accel& a, State& x, State& v, T t, T dt, const State* cached, State* last) {
         // Two objects, not one struct: the force sees the position's address, and a velocity in the same
         // object would then have to be stored before, and reloaded after, every evaluation not inlined.
-        State wx = x;
-        State wv = v;
-        run(a, wx, wv, t, dt, cached, last, std::make_index_sequence<plan::updates>{});
+        // No up-front copy of x: a kick before any drift evaluates the force at the caller's x, unchanged.
+        // Nor of v when a force evaluation comes first (lazy_velocity): a value read before a call not
+        // inlined is held across it, at -Os on the stack (7 instructions a step, x86 Euler-Cromer). Else v
+        // is read before any evaluation anyway; the copy costs no more (fewer bytes on Cortex-M0+). Every
+        // table has a drift and a kick, so wx and wv are written in full before the test below.
+        State wx;
+        State wv;
+        if constexpr (!lazy_velocity) assign(wv, v);
+        run(a, x, v, wx, wv, t, dt, cached, last, std::make_index_sequence<plan::updates>{});
         // The finiteness test's sum (detail::finite_sum) of the new x and v, x's components first: any order
         // serves (only a sum that fails goes on to the exact test), and this one needs the fewest register
         // copies where the force has just taken x apart.
@@ -266,37 +286,44 @@ private:
     }
 
     template <class Accel, std::size_t... K>
-    ODESTEP_INLINE static void run(Accel& a, State& wx, State& wv, T t, T dt, const State* cached, State* last, std::index_sequence<K...>) {
-        (update<K>(a, wx, wv, t, dt, cached, last), ...);
+    ODESTEP_INLINE static void run(Accel& a, const State& x, const State& v, State& wx, State& wv, T t, T dt,
+                                   const State* cached, State* last, std::index_sequence<K...>) {
+        (update<K>(a, x, v, wx, wv, t, dt, cached, last), ...);
     }
 
     // Update K of the sequence, emitted only when its coefficient is not zero.
     template <std::size_t K, class Accel>
-    ODESTEP_INLINE static void update(Accel& a, State& wx, State& wv, T t, T dt, const State* cached, State* last) {
+    ODESTEP_INLINE static void update(Accel& a, const State& x, const State& v, State& wx, State& wv, T t, T dt,
+                                      const State* cached, State* last) {
         constexpr T c = plan::coefficient(K);
         if constexpr (c != T(0)) {
             const T h = scaled<K>(dt);
+            // What update K starts from: the caller's x until a drift is made; with lazy_velocity, the
+            // caller's v until a kick is made (without, wv is v's copy from the start).
+            const State& px = plan::drift_before(K) ? wx : x;
+            const State& pv = (!lazy_velocity || plan::kick_before(K)) ? wv : v;
             if constexpr (!plan::is_kick(K)) {
                 ODESTEP_UNROLL
-                for (std::size_t n = 0; n < N; ++n) wx[n] = wx[n] + h * wv[n];
+                for (std::size_t n = 0; n < N; ++n) wx[n] = px[n] + h * pv[n];
             } else if constexpr (fsal && K == plan::first) {
                 if (cached != nullptr) {
-                    kick(wv, *cached, h);
+                    kick(wv, pv, *cached, h);
                 } else {
-                    kick(wv, detail::acceleration(a, t, wx), h);
+                    kick(wv, pv, detail::acceleration(a, t, px), h);
                 }
             } else if constexpr (fsal && K == plan::last) {
-                *last = detail::acceleration(a, t + dt, wx);  // at x_{n+1}: kept for the next step
-                kick(wv, *last, h);
+                *last = detail::acceleration(a, t + dt, px);  // at x_{n+1}: kept for the next step
+                kick(wv, pv, *last, h);
             } else {
-                kick(wv, detail::acceleration(a, kick_time<K>(t, dt), wx), h);
+                kick(wv, pv, detail::acceleration(a, kick_time<K>(t, dt), px), h);
             }
         }
     }
 
-    ODESTEP_INLINE static void kick(State& v, const State& acc, T h) noexcept {
+    // to = from + h acc, component by component (from may be to).
+    ODESTEP_INLINE static void kick(State& to, const State& from, const State& acc, T h) noexcept {
         ODESTEP_UNROLL
-        for (std::size_t n = 0; n < N; ++n) v[n] = v[n] + h * acc[n];
+        for (std::size_t n = 0; n < N; ++n) to[n] = from[n] + h * acc[n];
     }
 
     // c_K dt for update K, without the multiplication when c_K is 1.
