@@ -21,13 +21,7 @@
 // The event loop's rare path (a crossing, a probe, a NaN) is kept out of line, so that a quiet step's frame
 // and registers hold only what a quiet step needs.
 #ifndef ODESTEP_EVENTS_NOINLINE
-#if defined(__GNUC__) || defined(__clang__)
-#define ODESTEP_EVENTS_NOINLINE [[gnu::noinline]]
-#elif defined(_MSC_VER)
-#define ODESTEP_EVENTS_NOINLINE __declspec(noinline)
-#else
-#define ODESTEP_EVENTS_NOINLINE
-#endif
+#define ODESTEP_EVENTS_NOINLINE ODESTEP_NOINLINE
 #endif
 
 namespace odestep {
