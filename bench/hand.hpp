@@ -511,6 +511,71 @@ inline int beeman_checked(F f, std::array<T, N>& x, std::array<T, N>& v, std::ar
     return ok;
 }
 
+/// The derivatives a hand-written Adams-Bashforth 4 loop keeps: f of the last three steps in a ring of
+/// three (`slot` is where the next goes, so f_{n-1} is at slot - 1, f_{n-2} at slot - 2 and f_{n-3} at slot,
+/// mod 3), and how many are known (below three, the step is RK4's).
+template <class T, std::size_t N>
+struct ab4_history {
+    std::array<std::array<T, N>, 3> past;
+    int slot = 0;
+    int known = 0;
+};
+
+/// Four-step Adams-Bashforth, y <- y + h/24 (55 f_n - 59 f_{n-1} + 37 f_{n-2} - 9 f_{n-3}) with f_n = f(t, y)
+/// evaluated here and the others kept in `hist`: one evaluation per step. While fewer than three are known
+/// the step is rk4 (above), and f(t, y) is recorded (evaluated once more: the first three steps only), as
+/// odestep's adams starts.
+template <class T, std::size_t N, class F>
+inline void adams_bashforth4(F f, std::array<T, N>& y, ab4_history<T, N>& hist, T t, T h) {
+    std::array<T, N> fn;
+    f(t, y, fn);
+    if (hist.known < 3) {
+        rk4(f, y, t, h);
+        hist.past[hist.slot] = fn;
+        hist.slot = hist.slot == 2 ? 0 : hist.slot + 1;
+        ++hist.known;
+        return;
+    }
+    const std::array<T, N>& f1 = hist.past[hist.slot == 0 ? 2 : hist.slot - 1];
+    const std::array<T, N>& f2 = hist.past[hist.slot == 2 ? 0 : hist.slot + 1];
+    std::array<T, N>& f3 = hist.past[hist.slot];
+    const T h24 = h * (T(1) / T(24));
+    for (std::size_t i = 0; i < N; ++i) y[i] += h24 * (T(55) * fn[i] - T(59) * f1[i] + T(37) * f2[i] - T(9) * f3[i]);
+    f3 = fn;  // the oldest slot takes the newest
+    hist.slot = hist.slot == 2 ? 0 : hist.slot + 1;
+}
+
+/// adams_bashforth4, checked: the new state into a local with its sum, tested, then written with the
+/// history; f_n needs no test of its own once the formula uses it (55 h/24 times a NaN or Inf is not
+/// finite, nor is a sum with it). The RK4 start tests f(t, y) too, which only the history reads. On
+/// failure y and hist are untouched.
+template <class T, std::size_t N, class F>
+inline int adams_bashforth4_checked(F f, std::array<T, N>& y, ab4_history<T, N>& hist, T t, T h) {
+    std::array<T, N> fn;
+    f(t, y, fn);
+    std::array<T, N> yn;
+    if (hist.known < 3) {
+        yn = y;
+        if (rk4_checked(f, yn, t, h) != ok || !finite_state(sum(fn), fn)) return non_finite;
+    } else {
+        const std::array<T, N>& f1 = hist.past[hist.slot == 0 ? 2 : hist.slot - 1];
+        const std::array<T, N>& f2 = hist.past[hist.slot == 2 ? 0 : hist.slot + 1];
+        const std::array<T, N>& f3 = hist.past[hist.slot];
+        const T h24 = h * (T(1) / T(24));
+        T s = -T(0);
+        for (std::size_t i = 0; i < N; ++i) {
+            yn[i] = y[i] + h24 * (T(55) * fn[i] - T(59) * f1[i] + T(37) * f2[i] - T(9) * f3[i]);
+            s += yn[i];
+        }
+        if (!finite_state(s, yn)) return non_finite;
+    }
+    y = yn;
+    hist.past[hist.slot] = fn;
+    hist.slot = hist.slot == 2 ? 0 : hist.slot + 1;
+    if (hist.known < 3) ++hist.known;
+    return ok;
+}
+
 }  // namespace bench::hand
 
 #endif
