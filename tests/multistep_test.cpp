@@ -373,6 +373,24 @@ TEST_CASE("adams: a different dt or a wrong t returns step_mismatch, evaluates n
     });
 }
 
+TEST_CASE("adams: after a step whose end time overflows to Inf, no time continues the history") {
+    // t + dt = Inf: the next step has no finite time to start at, so every t is a mismatch (the allowance
+    // around an infinite expected time must not admit everything). y' = 0, so that y stays finite whatever dt.
+    const double big = std::numeric_limits<double>::max();
+    auto still = [](double, const state&, state& dydt) { dydt = state{}; };
+    for_each_adams([big, still](auto method) {
+        using stepper_t = odestep::adams<decltype(method), state>;
+        stepper_t stepper;
+        state y = y_start;
+        REQUIRE(stepper.step(still, y, big, big / 2) == odestep::status::ok);
+        REQUIRE(same_bits(y, y_start));
+        INFO(doctest::String(decltype(method)::name));
+        for (double t : {0.0, 1.0, -big, big, std::numeric_limits<double>::infinity()})
+            CHECK(stepper.step(still, y, t, big / 2) == odestep::status::step_mismatch);
+        CHECK(same_bits(y, y_start));
+    });
+}
+
 TEST_CASE("adams: t within a few ULPs of the expected time is accepted, as the times of a step counter are") {
     // The check allows 8 ULPs of |t| + |dt| + |t_first|; t0 + i dt and t_prev + dt differ by a few.
     for_each_adams([](auto method) {
