@@ -400,8 +400,8 @@ EOF
       print ""
       instruction_targets("hand")
       print ""
-      print "The same against the hand loop with odestep's guarantee (`hand_checked`: the new state tested for"
-      print "NaN/Inf, the caller's state untouched on failure), where a case has one:"
+      print "The same against the hand loop with the guarantee odestep gives (`hand_checked`: the new state tested for"
+      print "NaN/Inf, the state given left untouched on failure), where a case has one:"
       print ""
       instruction_targets("hand_checked")
       print ""
