@@ -576,6 +576,65 @@ inline int adams_bashforth4_checked(F f, std::array<T, N>& y, ab4_history<T, N>&
     return ok;
 }
 
+/// Adams-Bashforth-Moulton 4 in PECE mode, the history as adams_bashforth4's: predict
+/// p = y + h/24 (55 f_n - 59 f_{n-1} + 37 f_{n-2} - 9 f_{n-3}), evaluate f(t + h, p), correct
+/// y <- y + h/24 (9 f(t + h, p) + 19 f_n - 5 f_{n-1} + f_{n-2}). Two evaluations per step once started.
+template <class T, std::size_t N, class F>
+inline void adams_bashforth_moulton4(F f, std::array<T, N>& y, ab4_history<T, N>& hist, T t, T h) {
+    std::array<T, N> fn;
+    f(t, y, fn);
+    if (hist.known < 3) {
+        rk4(f, y, t, h);
+        hist.past[hist.slot] = fn;
+        hist.slot = hist.slot == 2 ? 0 : hist.slot + 1;
+        ++hist.known;
+        return;
+    }
+    const std::array<T, N>& f1 = hist.past[hist.slot == 0 ? 2 : hist.slot - 1];
+    const std::array<T, N>& f2 = hist.past[hist.slot == 2 ? 0 : hist.slot + 1];
+    std::array<T, N>& f3 = hist.past[hist.slot];
+    const T h24 = h * (T(1) / T(24));
+    std::array<T, N> p, fp;
+    for (std::size_t i = 0; i < N; ++i) p[i] = y[i] + h24 * (T(55) * fn[i] - T(59) * f1[i] + T(37) * f2[i] - T(9) * f3[i]);
+    f(t + h, p, fp);
+    for (std::size_t i = 0; i < N; ++i) y[i] += h24 * (T(9) * fp[i] + T(19) * fn[i] - T(5) * f1[i] + f2[i]);
+    f3 = fn;
+    hist.slot = hist.slot == 2 ? 0 : hist.slot + 1;
+}
+
+/// adams_bashforth_moulton4, checked as adams_bashforth4_checked: the corrected y into a local with its
+/// sum (f(t + h, p) and f_n enter it with non-zero weights), tested, then written with the history.
+template <class T, std::size_t N, class F>
+inline int adams_bashforth_moulton4_checked(F f, std::array<T, N>& y, ab4_history<T, N>& hist, T t, T h) {
+    std::array<T, N> fn;
+    f(t, y, fn);
+    std::array<T, N> yn;
+    if (hist.known < 3) {
+        yn = y;
+        if (rk4_checked(f, yn, t, h) != ok || !finite_state(sum(fn), fn)) return non_finite;
+    } else {
+        const std::array<T, N>& f1 = hist.past[hist.slot == 0 ? 2 : hist.slot - 1];
+        const std::array<T, N>& f2 = hist.past[hist.slot == 2 ? 0 : hist.slot + 1];
+        const std::array<T, N>& f3 = hist.past[hist.slot];
+        const T h24 = h * (T(1) / T(24));
+        std::array<T, N> p, fp;
+        for (std::size_t i = 0; i < N; ++i)
+            p[i] = y[i] + h24 * (T(55) * fn[i] - T(59) * f1[i] + T(37) * f2[i] - T(9) * f3[i]);
+        f(t + h, p, fp);
+        T s = -T(0);
+        for (std::size_t i = 0; i < N; ++i) {
+            yn[i] = y[i] + h24 * (T(9) * fp[i] + T(19) * fn[i] - T(5) * f1[i] + f2[i]);
+            s += yn[i];
+        }
+        if (!finite_state(s, yn)) return non_finite;
+    }
+    y = yn;
+    hist.past[hist.slot] = fn;
+    hist.slot = hist.slot == 2 ? 0 : hist.slot + 1;
+    if (hist.known < 3) ++hist.known;
+    return ok;
+}
+
 }  // namespace bench::hand
 
 #endif

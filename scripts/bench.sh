@@ -46,8 +46,8 @@ njobs=${JOBS:-$(nproc 2> /dev/null || echo 2)}
 rounds=${BENCH_ROUNDS:-51}
 count_steps=1000
 ratio_limit=1.05
-cases_all=(lorenz_rk4 threebody_rk4 threebody_dop853 threebody_rkf78 sho_float_rk4 lorenz_dopri5 lorenz_ab4 kepler_verlet
-  kepler_euler_cromer kepler_position_verlet kepler_forest_ruth kepler_beeman pebble_events)
+cases_all=(lorenz_rk4 threebody_rk4 threebody_dop853 threebody_rkf78 sho_float_rk4 lorenz_dopri5 lorenz_ab4 lorenz_abm4
+  kepler_verlet kepler_euler_cromer kepler_position_verlet kepler_forest_ruth kepler_beeman pebble_events)
 opts_all=(-O2 -O3 -Os)
 common_flags=(-std=c++17 -DNDEBUG -Wall -Wextra -Wdouble-promotion)
 libs=(-lgsl -lgslcblas -lm)
