@@ -8,8 +8,8 @@
 #include <new>
 #include <limits>
 
-#include "alloc_counter.hpp"
-#include "methods.hpp"
+#include "support/alloc_counter.hpp"
+#include "support/methods.hpp"
 
 namespace {
 

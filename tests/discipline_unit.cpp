@@ -4,7 +4,7 @@
 
 #include <array>
 
-#include "methods.hpp"
+#include "support/methods.hpp"
 
 namespace {
 template <class T>

@@ -6,9 +6,10 @@
 #include <limits>
 #include <type_traits>
 
+#include "detail/ops.hpp"
 #include "state.hpp"
 #include "status.hpp"
-#include "tableau.hpp"  // detail::abs_value
+#include "stepper.hpp"
 
 namespace odestep {
 

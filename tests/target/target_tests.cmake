@@ -12,7 +12,6 @@
 #   alloc_counter.cpp + allocation_test.cpp  replace malloc through glibc's __libc_malloc, which newlib does
 #       not have (the Cortex-M counterpart is scripts/audit.sh: a firmware image linked with the allocator
 #       wrapped away, and toolchains/board's odestep_board_bare);
-#   system_test.cpp  not in the portable list (it does build and pass on the target);
 #   the header units, the static-state check and the compile-fail tests  compile-only checks of the
 #       headers, independent of the core.
 
@@ -38,6 +37,7 @@ set(odestep_target_doctest_definitions
 
 function(odestep_target_options target)
   target_include_directories(${target} SYSTEM PRIVATE ${odestep_target_doctest_dir})
+  target_include_directories(${target} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})  # "support/..." (shared test helpers)
   target_compile_definitions(${target} PRIVATE ${odestep_target_doctest_definitions})
   # doctest.h is a system header here, so the full warning set applies to odestep and the tests only.
   # -Wno-psabi: GCC notes an ABI change of GCC 7.1 in libstdc++ code inlined into doctest; nothing to fix.

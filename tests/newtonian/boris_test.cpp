@@ -159,11 +159,11 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 // Traits
 
 static_assert(odestep::boris<v3>::order == 2);
-static_assert(odestep::boris<v3>::field_evals_per_step == 1 && odestep::boris<v3>::rhs_evals_per_step == 1);
+static_assert(odestep::boris<v3>::rhs_evals_per_step == 1 && odestep::boris<v3>::rhs_evals_per_step == 1);
 static_assert(!odestep::boris<v3>::symplectic && odestep::boris<v3>::volume_preserving);
 static_assert(odestep::boris<v3>::time_reversible && !odestep::boris<v3>::self_starting);
 static_assert(odestep::boris_relativistic<vec3<float>>::order == 2);
-static_assert(odestep::boris_relativistic<vec3<float>>::field_evals_per_step == 1);
+static_assert(odestep::boris_relativistic<vec3<float>>::rhs_evals_per_step == 1);
 static_assert(odestep::boris_relativistic<vec3<float>>::rhs_evals_per_step == 1);
 static_assert(!odestep::boris_relativistic<vec3<float>>::symplectic);
 static_assert(odestep::boris_relativistic<vec3<float>>::volume_preserving);

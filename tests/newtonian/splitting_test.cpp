@@ -202,7 +202,7 @@ TEST_CASE("splitting: traits match the published schemes, and a step makes exact
         INFO(doctest::String(M::name));
         CHECK(stepper::order == e.order);
         CHECK(stepper::stages == e.kicks);
-        CHECK(stepper::accelerations_per_step == e.kicks);
+        CHECK(stepper::rhs_evals_per_step == e.kicks);
         CHECK(stepper::rhs_evals_per_step == e.kicks);
         CHECK(stepper::first_same_as_last == e.fsal);
         CHECK(stepper::time_reversible == e.reversible);
@@ -670,7 +670,7 @@ TEST_CASE("a NaN from any evaluation of any splitting leaves x and v exactly as 
     for_each_method([](auto method) {
         using M = decltype(method);
         using stepper = stepper_of<M>;
-        for (std::size_t poisoned = 1; poisoned <= stepper::accelerations_per_step; ++poisoned) {
+        for (std::size_t poisoned = 1; poisoned <= stepper::rhs_evals_per_step; ++poisoned) {
             std::size_t calls = 0;
             auto a = [&calls, poisoned](double t, const state& x) {
                 ++calls;
@@ -804,8 +804,8 @@ TEST_CASE("a NaN mid-run through integrate stops at the last good state, at the 
 
 static_assert(std::is_same_v<odestep::leapfrog<state>, odestep::velocity_verlet<state>>,
               "leapfrog (kick-drift-kick) is velocity Verlet");
-static_assert(odestep::velocity_verlet<std::array<float, 3>>::accelerations_per_step == 2);
-static_assert(odestep::position_verlet<std::array<float, 3>>::accelerations_per_step == 1);
+static_assert(odestep::velocity_verlet<std::array<float, 3>>::rhs_evals_per_step == 2);
+static_assert(odestep::position_verlet<std::array<float, 3>>::rhs_evals_per_step == 1);
 static_assert(std::is_same_v<odestep::yoshida6<std::array<float, 3>>::value_type, float>);
 // The stateless tables keep nothing, and their step is const: one object serves any number of states.
 static_assert(sizeof(odestep::position_verlet<state>) == 1);

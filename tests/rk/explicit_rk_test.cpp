@@ -8,7 +8,7 @@
 #include <cstring>
 #include <limits>
 
-#include "methods.hpp"
+#include "support/methods.hpp"
 
 namespace {
 
@@ -36,19 +36,19 @@ struct expected_traits {
 };
 
 // From the published tables (see tableaux.hpp for the sources): a stage the solution does not read is
-// not evaluated, so Bogacki-Shampine's and Dormand-Prince's last (FSAL) stage and Fehlberg 7(8)'s
+// not evaluated (and a table without embedded weights has no estimating step: 0), so Bogacki-Shampine's and Dormand-Prince's last (FSAL) stage and Fehlberg 7(8)'s
 // eleventh stage (read only by the seventh-order weights) cost an evaluation only with the error estimate.
 template <class M>
 constexpr expected_traits published() {
     using namespace odestep::tableaux;
-    if constexpr (std::is_same_v<M, euler>) return {1, 1, 1, 1, 0};
+    if constexpr (std::is_same_v<M, euler>) return {1, 1, 1, 0, 0};
     else if constexpr (std::is_same_v<M, midpoint>) return {2, 2, 2, 2, 1};
-    else if constexpr (std::is_same_v<M, heun>) return {2, 2, 2, 2, 0};
-    else if constexpr (std::is_same_v<M, ralston2>) return {2, 2, 2, 2, 0};
-    else if constexpr (std::is_same_v<M, kutta3>) return {3, 3, 3, 3, 0};
-    else if constexpr (std::is_same_v<M, ssprk3>) return {3, 3, 3, 3, 0};
-    else if constexpr (std::is_same_v<M, rk4>) return {4, 4, 4, 4, 0};
-    else if constexpr (std::is_same_v<M, rk38>) return {4, 4, 4, 4, 0};
+    else if constexpr (std::is_same_v<M, heun>) return {2, 2, 2, 0, 0};
+    else if constexpr (std::is_same_v<M, ralston2>) return {2, 2, 2, 0, 0};
+    else if constexpr (std::is_same_v<M, kutta3>) return {3, 3, 3, 0, 0};
+    else if constexpr (std::is_same_v<M, ssprk3>) return {3, 3, 3, 0, 0};
+    else if constexpr (std::is_same_v<M, rk4>) return {4, 4, 4, 0, 0};
+    else if constexpr (std::is_same_v<M, rk38>) return {4, 4, 4, 0, 0};
     else if constexpr (std::is_same_v<M, bogacki_shampine32>) return {3, 4, 3, 4, 2};
     else if constexpr (std::is_same_v<M, fehlberg45>) return {5, 6, 6, 6, 4};
     else if constexpr (std::is_same_v<M, cash_karp54>) return {5, 6, 6, 6, 4};

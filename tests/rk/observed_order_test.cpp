@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstddef>
 
-#include "methods.hpp"
+#include "support/methods.hpp"
 
 namespace {
 

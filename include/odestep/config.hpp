@@ -1,0 +1,68 @@
+// odestep: build configuration, the one place for the library's macros.
+#ifndef ODESTEP_CONFIG_HPP
+#define ODESTEP_CONFIG_HPP
+
+/// \file
+/// The macros every odestep header uses. Each may be defined by the user before the first odestep header
+/// to override the choice made here (for a compiler the library does not know).
+
+// Loops over the components of a state are unrolled (fully, for up to 16 components) except where the
+// build optimizes for size: there the loop is smaller, and flash is what counts.
+#ifndef ODESTEP_UNROLL
+#if defined(__OPTIMIZE_SIZE__) || !(defined(__GNUC__) || defined(__clang__))
+#define ODESTEP_UNROLL
+#else
+#define ODESTEP_UNROLL _Pragma("GCC unroll 16")
+#endif
+#endif
+
+// The stepper's per-component arithmetic is written as small functions over the table (one per weight row,
+// class of terms, ...); they are expression fragments, meant to be inlined where they are used whatever
+// the optimization level (at -Os a fragment used twice could otherwise stay a call inside the loop).
+#ifndef ODESTEP_INLINE
+#if defined(__GNUC__) || defined(__clang__)
+#define ODESTEP_INLINE [[gnu::always_inline]] inline
+#else
+#define ODESTEP_INLINE inline
+#endif
+#endif
+
+// A rare path (a multistep method's start, the event loop's crossings) kept out of line, so that the
+// common step's frame and registers hold only what it needs.
+#ifndef ODESTEP_NOINLINE
+#if defined(__GNUC__) || defined(__clang__)
+#define ODESTEP_NOINLINE [[gnu::noinline]]
+#elif defined(_MSC_VER)
+#define ODESTEP_NOINLINE __declspec(noinline)
+#else
+#define ODESTEP_NOINLINE
+#endif
+#endif
+
+// The non-finite path of a step is the rare one: the compiler lays it out of line, so that the ordinary
+// path runs straight through.
+#ifndef ODESTEP_UNLIKELY
+#if defined(__GNUC__) || defined(__clang__)
+#define ODESTEP_UNLIKELY(condition) __builtin_expect(static_cast<bool>(condition), 0)
+#else
+#define ODESTEP_UNLIKELY(condition) (condition)
+#endif
+#endif
+
+// The event loop's rare path (a crossing, a probe, a NaN) is kept out of line, so that a quiet step's frame
+// and registers hold only what a quiet step needs.
+#ifndef ODESTEP_EVENTS_NOINLINE
+#define ODESTEP_EVENTS_NOINLINE ODESTEP_NOINLINE
+#endif
+
+namespace odestep::detail {
+/// True where the build optimizes for size (-Os, -Oz): the loops over the components stay loops there,
+/// and a few choices between two equivalent forms of a computation follow (the step's finiteness sum).
+#if defined(__OPTIMIZE_SIZE__)
+inline constexpr bool optimizing_for_size = true;
+#else
+inline constexpr bool optimizing_for_size = false;
+#endif
+}  // namespace odestep::detail
+
+#endif

@@ -1,0 +1,130 @@
+// odestep: the whole-state operations every stepper is made of (finiteness, absolute value, assignment,
+// scaled sums), written once.
+#ifndef ODESTEP_DETAIL_OPS_HPP
+#define ODESTEP_DETAIL_OPS_HPP
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+
+#include "../config.hpp"
+
+namespace odestep::detail {
+
+template <class T>
+constexpr bool is_finite(T x) noexcept {
+    // x * 0 is +-0 for every finite x and NaN for NaN or +-Inf (IEEE 754); works in constexpr, unlike
+    // std::isfinite before C++23. Breaks under -ffinite-math-only (-ffast-math), which the README forbids.
+    return x * T(0) == T(0);
+}
+
+/// |x|. With the compiler's builtin it is one instruction (a sign-bit mask) and a constant expression;
+/// the fallback x < 0 ? -x : x keeps the sign of -0, which no sum of magnitudes or comparison can see.
+template <class T>
+constexpr T abs_value(T x) noexcept {
+#if defined(__GNUC__) || defined(__clang__)
+    if constexpr (std::is_same_v<T, float>) {
+        return __builtin_fabsf(x);
+    } else if constexpr (std::is_same_v<T, double>) {
+        return __builtin_fabs(x);
+    } else if constexpr (std::is_same_v<T, long double>) {
+        return __builtin_fabsl(x);
+    } else {
+        return x < T(0) ? -x : x;
+    }
+#else
+    return x < T(0) ? -x : x;
+#endif
+}
+
+template <class T>
+constexpr T max_value(T a, T b) noexcept {
+    return a < b ? b : a;
+}
+
+/// The fast half of the finiteness test, for a plain sum of values: sum - sum is +0 when the sum is finite
+/// and NaN when it is NaN or +-Inf (Inf - Inf is NaN), and only NaN compares unequal to itself. A sum of
+/// finite values is finite unless it overflows, so `true` proves every term finite, and `false` means
+/// that a term is not finite or that the sum overflowed (then ask each_finite).
+template <class T>
+constexpr bool finite_sum(T sum) noexcept {
+    const T d = sum - sum;
+    return d == d;  // one compare and one branch on unordered; no zero constant
+}
+
+/// The exact test, component by component. Always inlined: it is the slow path after a failed
+/// finite_sum, and as a call (at -Os) it made every value live across it spill to the stack on the hot
+/// path too.
+///   - Otherwise -largest <= y_i <= largest, false for +-Inf and NaN: comparisons, which overwrite no
+///     register, so the values the step is about to store need no copies kept for this path.
+///   - Optimizing for size, the sum of y_i * 0 (+-0 exactly when y_i is finite, NaN otherwise) in a loop
+///     without a branch, the smallest form.
+template <class T, std::size_t N>
+ODESTEP_INLINE constexpr bool each_finite(const std::array<T, N>& y) noexcept {
+    if constexpr (optimizing_for_size) {
+        T zeros = T(0);
+        for (std::size_t n = 0; n < N; ++n) zeros += y[n] * T(0);
+        return zeros == T(0);
+    } else {
+        constexpr T largest = std::numeric_limits<T>::max();
+        for (std::size_t n = 0; n < N; ++n)
+            if (!(y[n] >= -largest && y[n] <= largest)) return false;
+        return true;
+    }
+}
+
+/// sum += every component of y.
+template <class T, std::size_t N>
+ODESTEP_INLINE constexpr void add_components(T& sum, const std::array<T, N>& y) noexcept {
+    ODESTEP_UNROLL
+    for (std::size_t n = 0; n < N; ++n) sum += y[n];
+}
+
+/// True when every component of every array given is finite. The hot path is one plain sum of all the
+/// components (finite_sum): one compare and one branch however many arrays; only when that fails,
+/// because a component is not finite or because the sum overflowed, is the exact test run. Always inlined,
+/// like each_finite: GCC at -Os keeps a function called from two places out of line, and then every value
+/// live across the call spills.
+template <class T, std::size_t N, class... More>
+ODESTEP_INLINE constexpr bool all_finite(const std::array<T, N>& y, const More&... more) noexcept {
+    T sum = y[0];
+    ODESTEP_UNROLL
+    for (std::size_t n = 1; n < N; ++n) sum += y[n];
+    (add_components(sum, more), ...);
+    return finite_sum(sum) || (each_finite(y) && (each_finite(more) && ...));
+}
+
+/// to = from. Optimizing for size, one aggregate copy: the fewest and shortest instructions. Otherwise
+/// component by component, so that values still in registers go straight to `to` (an aggregate copy of a
+/// small array can make the compiler pack two floats into an integer register first).
+template <class T, std::size_t N>
+ODESTEP_INLINE constexpr void assign(std::array<T, N>& to, const std::array<T, N>& from) noexcept {
+    if constexpr (optimizing_for_size) {
+        to = from;
+    } else {
+        ODESTEP_UNROLL
+        for (std::size_t n = 0; n < N; ++n) to[n] = from[n];
+    }
+}
+
+/// x + c v, component by component (c a scalar): a drift, a kick, an Euler step.
+template <class T, std::size_t N>
+constexpr std::array<T, N> plus_scaled(const std::array<T, N>& x, T c, const std::array<T, N>& v) noexcept {
+    std::array<T, N> out;
+    ODESTEP_UNROLL
+    for (std::size_t n = 0; n < N; ++n) out[n] = x[n] + c * v[n];
+    return out;
+}
+
+/// The same values, bit for bit where they are numbers (NaN equals nothing).
+template <class T, std::size_t N>
+constexpr bool same_values(const std::array<T, N>& a, const std::array<T, N>& b) noexcept {
+    for (std::size_t n = 0; n < N; ++n)
+        if (!(a[n] == b[n])) return false;
+    return true;
+}
+
+}  // namespace odestep::detail
+
+#endif

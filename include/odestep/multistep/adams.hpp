@@ -1,0 +1,248 @@
+// odestep: Adams-Bashforth and Adams-Bashforth-Moulton (PECE) multistep methods for y' = f(t, y).
+#ifndef ODESTEP_MULTISTEP_ADAMS_HPP
+#define ODESTEP_MULTISTEP_ADAMS_HPP
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+
+#include "../detail/continuation.hpp"
+#include "../detail/ops.hpp"
+#include "../rk/explicit_rk.hpp"
+#include "../state.hpp"
+#include "../status.hpp"
+#include "../stepper.hpp"
+#include "../system.hpp"
+#include "../tables/adams.hpp"
+
+namespace odestep {
+
+
+namespace detail {
+template <class Stepper>
+struct is_explicit_rk : std::false_type {};
+template <class Method, class State>
+struct is_explicit_rk<explicit_rk<Method, State>> : std::true_type {};
+}  // namespace detail
+
+/// A fixed-step Adams method (Adams-Bashforth, or Adams-Bashforth-Moulton PECE) from `Method::table<T>`.
+///
+/// Each step evaluates f_n = f(t_n, y_n) at its start and combines it with the k-1 derivatives of the
+/// previous steps, which the stepper keeps (with the dt they were taken with and the time the next step
+/// must start at) in a fixed-size ring buffer inside the object: no heap. An Adams-Bashforth step then
+/// costs one evaluation of f, a PECE step two (the second E of PECE is the next step's f_n).
+///
+/// Starting: while fewer than k-1 derivatives are known, `step` takes the step with the one-step `Starter`
+/// (an explicit_rk, rk4 by default) and records the derivative at the start of the step from the starter's
+/// own first evaluation (the first needed stage of an explicit table has c = 0 and reads y itself, so it is
+/// f(t_n, y_n); no extra evaluation). Those k-1 steps are exactly the starter's; the formula takes over at
+/// step k. The starter's order p should be at least k - 1 for the method to keep its order.
+///
+/// History checks. The first step after construction or `reset()` accepts any t and dt. After that, a step
+/// whose dt differs from the history's (exact comparison) or whose t is not the end of the previous step
+/// returns `status::step_mismatch` and touches nothing: neither y nor the history. "The end of the previous
+/// step" is t_prev + dt to within 8 eps (|t_prev + dt| + |dt| + |t_first|), t_first being the time of the
+/// first step since the reset. That admits the times t0 + i dt of a step counter (as odestep::integrate
+/// computes them), whose rounding is relative to t0 and i dt and not only to t (from t0 = -1000 with
+/// dt = 0.1, a slack of a few ULPs of |t| + |dt| alone fails near t = -50), but not a state from another time.
+/// After a mismatch the caller may `reset()` and go on with the new dt or t (the next k-1 steps are the
+/// starter's again), or go on with the right ones as if the bad call had not happened.
+///
+/// Because of that, `odestep::integrate` over an interval that is not a whole number of steps fails at its
+/// last, shortened step with `step_mismatch` (y is then the state at the returned t, the last good one).
+/// Over a whole number of steps it works: integrate takes its last step as dt exactly when t1 - t_{n-1}
+/// differs from dt by the rounding of the grid only (over [0, 1] with dt = 0.1, 0.09999999999999998).
+///
+/// A NaN or Inf from f or in the new state returns `status::non_finite`, and y and the history are left
+/// exactly as they were: the call may be retried.
+///
+/// After changing y by hand (an event, a new initial condition), call `reset()`: the history belongs to the
+/// old trajectory, and the t check cannot tell a changed y at the right time.
+template <class Method, class State, class Starter = rk4<State>>
+class adams : public stepper_defaults<State> {
+public:
+    using state_type = State;
+    using value_type = value_type_t<State>;
+    using method_type = Method;
+    using starter_type = Starter;
+
+private:
+    using T = value_type;
+    static constexpr auto tab = Method::template table<T>;
+    using table_type = std::remove_const_t<decltype(tab)>;
+    static constexpr std::size_t K = table_type::steps;
+    static constexpr std::size_t M = K - 1;  // derivatives kept between steps
+    static constexpr std::size_t N = state_traits<State>::size;
+    static constexpr bool pece = table_type::has_corrector;
+    static_assert(detail::is_explicit_rk<Starter>::value, "odestep: the starter must be an odestep::explicit_rk");
+    static_assert(std::is_same_v<typename Starter::state_type, State>,
+                  "odestep: the starter must step the same State as the multistep method");
+
+public:
+    static constexpr int order = tab.order;
+    static constexpr std::size_t stages = 1;
+    /// k: the method reads f at k successive steps, f_n (evaluated in the step) and the k-1 it keeps.
+    static constexpr std::size_t steps = K;
+    /// Right-hand-side evaluations of a step once the history is full: 1 (Adams-Bashforth) or 2 (PECE).
+    static constexpr std::size_t rhs_evals_per_started_step = pece ? 2 : 1;
+    /// The most one `step` call makes, the starter's steps included.
+    static constexpr std::size_t rhs_evals_per_step = Starter::rhs_evals_per_step > rhs_evals_per_started_step
+                                                          ? Starter::rhs_evals_per_step
+                                                          : rhs_evals_per_started_step;
+    /// Every step continues the history's grid: the same dt (see step_mismatch).
+    static constexpr bool uniform_steps = true;
+
+    /// y <- y(t + dt). See the class comment for `step_mismatch` and `non_finite`; on either, neither y nor
+    /// the history changed.
+    template <class System>
+    [[nodiscard]] status step(System&& f, State& y, T t, T dt) {
+        // The history's grid (detail::continuation): the same dt, and t the last step's t + dt to within the
+        // rounding of a counter's t0 + i dt; a NaN or infinite t is a mismatch.
+        if (count_ > 0 && !next_.on_grid(t, dt)) return status::step_mismatch;
+        if (count_ < M) return starter_step(f, y, t, dt);
+        State fn;
+        detail::evaluate(f, t, y, fn);
+        State next;
+        if constexpr (pece) {
+            State predicted;
+            combine<predictor>(predicted, y, fn, fn, dt);  // the second fn is not read: beta has no f_{n+1}
+            State fp;
+            detail::evaluate(f, t + dt, static_cast<const State&>(predicted), fp);
+            combine<corrector>(next, y, fp, fn, dt);
+        } else {
+            combine<predictor>(next, y, fn, fn, dt);
+        }
+        // f_n enters y_{n+1} with a non-zero weight (as does f(t_{n+1}, p) in PECE), and x * Inf or x * NaN is
+        // never finite, nor is a sum with a non-finite term: testing y_{n+1} tests the derivatives too.
+        if (!detail::all_finite(next)) return status::non_finite;
+        commit(fn, y, t, dt);
+        detail::assign(y, next);
+        return status::ok;
+    }
+
+    /// Empties the history: the next step accepts any t and dt and the next k-1 steps are the starter's.
+    void reset() noexcept {
+        count_ = 0;
+        slot_ = 0;
+    }
+
+    /// How many past derivatives are kept, 0 to k-1; at k-1 the multistep formula steps.
+    std::size_t history_size() const noexcept { return count_; }
+
+private:
+    std::array<State, M> history_{};  // ring buffer; the next f_n goes to slot_, f_{n-j} is at slot_ - j mod M
+    detail::continuation<State> next_{};  // where the next step must start (t + dt of the last), and its dt
+    std::size_t count_ = 0;
+    std::size_t slot_ = 0;
+
+    // Weight rows as types, so each weight is a constant expression inside `combine`. Index 0 is the
+    // derivative evaluated in this step (f_n for the predictor, f(t_{n+1}, p) for the corrector), index 1 the
+    // next one (f_n for the corrector), and the rest come from the history: predictor index j is f_{n-j},
+    // corrector index j is f_{n+1-j}.
+    struct predictor {
+        static constexpr std::size_t size = K;
+        static constexpr std::size_t from_history = 1;  // first index read from the history
+        static constexpr T weight(std::size_t j) noexcept { return tab.beta[j]; }
+    };
+    struct corrector {
+        static constexpr std::size_t size = pece ? K : 0;
+        static constexpr std::size_t from_history = 2;
+        static constexpr T weight(std::size_t j) noexcept { return pece ? tab.gamma[j] : T(0); }
+    };
+
+    // out = y + sum_j (dt w_j) v_j with v_0 = first, v_1 = second (if W reads it there) and the history.
+    // The weights and the sources are expanded at compile time at every -O, -Os included (there, as loops,
+    // the arrays of weights and of pointers were built at run time: together with the grid check and the
+    // out-of-line start, x86-64 Lorenz AB4 went from 289 to 155 instructions a step), so each weight is dt
+    // times a constant and the history is read through K - 1 pointers chosen once per step; the loop over
+    // the components is unrolled except when optimizing for size.
+    template <class W>
+    ODESTEP_INLINE void combine(State& out, const State& y, const State& first, const State& second, T dt) const noexcept {
+        combine_terms<W>(out, y, first, second, dt, std::make_index_sequence<W::size - 1>{});
+    }
+    template <class W, std::size_t... J>
+    ODESTEP_INLINE void combine_terms(State& out, const State& y, const State& first, const State& second, T dt,
+                                      std::index_sequence<J...>) const noexcept {
+        const T w0 = dt * W::weight(0);
+        const std::array<T, sizeof...(J)> w{(dt * W::weight(J + 1))...};
+        const std::array<const State*, sizeof...(J)> v{&source<W>(J + 1, second)...};
+        ODESTEP_UNROLL
+        for (std::size_t n = 0; n < N; ++n) {
+            T acc = w0 * first[n];
+            ((acc += w[J] * (*v[J])[n]), ...);  // j = 1, 2, ... in order
+            out[n] = y[n] + acc;
+        }
+    }
+    // Term j >= 1 of W: `second` where W reads it (the corrector's f_n), else the history.
+    template <class W>
+    ODESTEP_INLINE const State& source(std::size_t j, const State& second) const noexcept {
+        if (W::from_history == 2 && j == 1) return second;
+        return past(j + 1 - W::from_history);
+    }
+
+    // f_{n-back}, back = 1 .. M: the entry `back` slots before the next free one (slot_ < M).
+    ODESTEP_INLINE const State& past(std::size_t back) const noexcept {
+        return history_[slot_ >= back ? slot_ - back : slot_ + M - back];
+    }
+
+    ODESTEP_INLINE void commit(const State& fn, const State& y, T t, T dt) noexcept {
+        next_.expect(t, dt, y, count_ > 0);  // the first step since reset() starts the grid (its t_start)
+        detail::assign(history_[slot_], fn);
+        slot_ = slot_ + 1 == M ? 0 : slot_ + 1;
+        if (count_ < M) ++count_;
+    }
+
+    // The user's f, called through detail::evaluate, recording f(t, y) the first time the starter asks for it.
+    template <class System>
+    struct recording_system {
+        System& f;
+        const T t;
+        const State& y;
+        State& fn;
+        bool recorded;
+        void operator()(T time, const State& x, State& dydt) {
+            detail::evaluate(f, time, x, dydt);
+            if (!recorded && time == t && detail::same_values(x, y)) {
+                detail::assign(fn, dydt);
+                recorded = true;
+            }
+        }
+    };
+
+    // Out of line: the k-1 starting steps are rare, and their frame (the starter's stages) would otherwise
+    // be every step's (x86-64 -Os, Lorenz AB4: 14 instructions a step for the registers saved and restored).
+    template <class System>
+    ODESTEP_NOINLINE status starter_step(System& f, State& y, T t, T dt) {
+        State next = y;
+        State fn{};  // written by the recorder; zeroed so that g++ -O1 sees it initialised
+        recording_system<System> recorder{f, t, static_cast<const State&>(y), fn, false};
+        const status s = Starter{}.step(recorder, next, t, dt);
+        if (s != status::ok) return s;
+        // Not reached with an explicit_rk starter (its first evaluation is f(t, y)); kept so that a starter
+        // that never asks for f(t, y) costs an evaluation rather than a wrong history.
+        if (!recorder.recorded) detail::evaluate(f, t, static_cast<const State&>(y), fn);
+        // The starter checked its new state; f_n is checked here, as a starter may read it only through a
+        // stage input (the midpoint rule's b_1 = 0), where a non-finite value need not reach the new state.
+        if (!detail::all_finite(fn)) return status::non_finite;
+        commit(fn, y, t, dt);
+        detail::assign(y, next);
+        return status::ok;
+    }
+};
+
+/// The named multistep steppers. The starter, for the first k-1 steps, is rk4 unless given.
+template <class State, class Starter = rk4<State>>
+using adams_bashforth2 = adams<tables::bashforth2, State, Starter>;
+template <class State, class Starter = rk4<State>>
+using adams_bashforth3 = adams<tables::bashforth3, State, Starter>;
+template <class State, class Starter = rk4<State>>
+using adams_bashforth4 = adams<tables::bashforth4, State, Starter>;
+template <class State, class Starter = rk4<State>>
+using adams_bashforth5 = adams<tables::bashforth5, State, Starter>;
+template <class State, class Starter = rk4<State>>
+using adams_bashforth_moulton4 = adams<tables::bashforth_moulton4, State, Starter>;
+
+}  // namespace odestep
+
+#endif

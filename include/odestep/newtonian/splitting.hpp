@@ -1,0 +1,295 @@
+// odestep: symplectic splitting (composition) methods for Newton's equations x'' = a(t, x), driven by
+// constexpr coefficient tables, and the table library.
+#ifndef ODESTEP_NEWTONIAN_SPLITTING_HPP
+#define ODESTEP_NEWTONIAN_SPLITTING_HPP
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <utility>
+
+#include "../detail/continuation.hpp"
+#include "../detail/ops.hpp"
+#include "../state.hpp"
+#include "../status.hpp"
+#include "../stepper.hpp"
+#include "../system.hpp"
+#include "../tables/splitting.hpp"
+
+namespace odestep {
+
+namespace detail {
+
+// What the stepper needs to know of a table, at compile time.
+template <class Method, class T>
+struct splitting_plan {
+    static constexpr auto tab = Method::template table<T>;
+    using table_type = std::remove_const_t<decltype(tab)>;
+    static constexpr std::size_t M = table_type::size;
+    static constexpr std::size_t updates = 2 * M;
+    static constexpr std::size_t first = first_update(tab);
+    static constexpr std::size_t last = last_update(tab);
+
+    static constexpr bool is_kick(std::size_t k) noexcept { return is_kick_update(tab, k); }
+    static constexpr T coefficient(std::size_t k) noexcept { return update_coefficient(tab, k); }
+
+    static constexpr std::size_t count_kicks() noexcept {
+        std::size_t n = 0;
+        for (std::size_t k = 0; k < updates; ++k) n += (is_kick(k) && coefficient(k) != T(0)) ? 1U : 0U;
+        return n;
+    }
+    static constexpr std::size_t kicks = count_kicks();
+
+    /// First same as last: the step begins with a kick at x_n and ends with a kick at x_{n+1}, so the
+    /// acceleration of the last kick of one step is that of the first kick of the next.
+    static constexpr bool fsal = kicks >= 2 && first < updates && is_kick(first) && is_kick(last);
+
+    /// A drift (a kick) with a coefficient not zero comes before update k.
+    static constexpr bool drift_before(std::size_t k) noexcept {
+        for (std::size_t j = 0; j < k; ++j)
+            if (!is_kick(j) && coefficient(j) != T(0)) return true;
+        return false;
+    }
+    static constexpr bool kick_before(std::size_t k) noexcept {
+        for (std::size_t j = 0; j < k; ++j)
+            if (is_kick(j) && coefficient(j) != T(0)) return true;
+        return false;
+    }
+
+    /// c for update k: the drift coefficients before it, summed.
+    static constexpr T time_fraction(std::size_t k) noexcept {
+        T c = T(0);
+        for (std::size_t j = 0; j < k; ++j)
+            if (!is_kick(j)) c += coefficient(j);
+        return c;
+    }
+};
+
+// The cached acceleration of a first-same-as-last method: a(t, *x), valid while the next step starts on
+// the same position object at that time (detail::continuation, as the history-keeping steppers use).
+template <class State, bool Fsal>
+struct splitting_cache {};
+template <class State>
+struct splitting_cache<State, true> {
+    State acceleration{};
+    continuation<State> next{};
+};
+
+}  // namespace detail
+
+/// A step of a symplectic splitting method for x'' = a(t, x) from the table `Method::table<T>`, with
+/// position and velocity as two states, advanced in place.
+///
+/// The sequence of drifts and kicks is unrolled at compile time: a zero coefficient emits nothing. The
+/// force must be of position alone, `State a(T t, const State& x)` (a velocity-dependent force does not
+/// compile): only then is each kick an exact, symplectic flow.
+///
+/// First same as last (velocity Verlet, leapfrog, Blanes-Moan): the acceleration of a step's last kick,
+/// a(t + dt, x_{n+1}), is kept with that time and the address of the x it belongs to, and serves as the
+/// first kick's acceleration of the next step when that step is called with the same x object at the
+/// same time. "The same time" allows the rounding of the run's times (detail::continuation): `integrate`
+/// calls step n+1 at t0 + (n+1) dt from its counter, which differs from the fl(t + dt) of step n in the
+/// last bits about one step in three. (For a force that depends on t, the kept value is then a at a time a few ULPs off.)
+/// Velocity Verlet thus costs one evaluation of a per step, stepping forward or back (-dt). A failed step
+/// keeps the acceleration it had. What the stepper cannot see is a change made to x between two steps,
+/// or to the force itself (a parameter of the functor, a control input): call `reset()` after changing x
+/// or v outside the stepper (an event, a correction, a new initial state in the same object) or changing
+/// the force, and the next step evaluates afresh. One stepper can step several states, correctly, but
+/// each step then evaluates afresh: give each state its own stepper. The other tables keep no state at
+/// all, and their step is const.
+template <class Method, class State>
+class splitting : public stepper_defaults<State> {
+public:
+    using state_type = State;
+    using value_type = value_type_t<State>;
+    using method_type = Method;
+
+private:
+    using T = value_type;
+    using plan = detail::splitting_plan<Method, T>;
+    static_assert(is_consistent(plan::tab),
+                  "odestep: the table's drift or kick coefficients do not sum to 1, or its time_reversible claim "
+                  "does not match its sequence of updates");
+    static_assert(plan::kicks >= 1, "odestep: a splitting table needs at least one kick");
+    static constexpr std::size_t N = state_traits<State>::size;
+    static constexpr bool fsal = plan::fsal;
+    static constexpr bool ends_with_kick = plan::is_kick(plan::last);
+    // The first update is a kick that evaluates the force (not a kept acceleration): see advance.
+    static constexpr bool lazy_velocity = plan::is_kick(plan::first) && !fsal;
+
+public:
+    static constexpr int order = plan::tab.order;
+    /// Kicks per step.
+    static constexpr std::size_t stages = plan::kicks;
+    /// Evaluations of a in one step, the most it makes (first same as last: the first step, or the first
+    /// after reset(); the others make one fewer).
+    [[deprecated("odestep: use rhs_evals_per_step")]] static constexpr std::size_t accelerations_per_step = plan::kicks;
+    static constexpr std::size_t rhs_evals_per_step = plan::kicks;
+    static constexpr bool first_same_as_last = fsal;
+    static constexpr bool symplectic = true;
+    static constexpr bool time_reversible = plan::tab.time_reversible;
+    static constexpr system_form system = system_form::newtonian;
+
+    /// (x, v) <- (x, v)(t + dt). On `status::non_finite` x and v are left exactly as they were.
+    template <class Accel, bool F = fsal, std::enable_if_t<!F, int> = 0>
+    [[nodiscard]] status step(Accel&& a, State& x, State& v, T t, T dt) const {
+        return advance(a, x, v, t, dt, nullptr, nullptr);
+    }
+
+    /// As above; the acceleration of the last kick is kept for the next step (not when the step fails).
+    template <class Accel, bool F = fsal, std::enable_if_t<F, int> = 0>
+    [[nodiscard]] status step(Accel&& a, State& x, State& v, T t, T dt) {
+        const bool hit = cache_.next.at(t, x);
+        if (!hit) {
+            cache_.next.clear();  // until a step succeeds, the kept value belongs to no step
+            cache_.acceleration = detail::acceleration(a, t, x);
+        }
+        State last;
+        const status s = advance(a, x, v, t, dt, &cache_.acceleration, &last);
+        if (s == status::ok) {
+            detail::assign(cache_.acceleration, last);  // evaluated at t + dt, where the next step starts
+            cache_.next.expect(t, dt, x, hit);
+        }
+        return s;
+    }
+
+    /// The first-same-as-last step for a caller who keeps the acceleration, as a hand-written loop does:
+    /// on entry `acc` is a(t, x) (evaluate it once, `acc = a(t0, x0)`, before the first step; again after
+    /// changing x outside the stepper); on status::ok it is a(t + dt, x) of the new x, the next step's
+    /// entry value. The stepper keeps and checks nothing, so this form has no continuation test: one
+    /// evaluation of a per step, always, and the step is const (one stepper serves any number of states).
+    /// On status::non_finite x, v and acc are left exactly as they were. acc is an object of its own (not
+    /// x or v).
+    template <class Accel, bool F = fsal, std::enable_if_t<F, int> = 0>
+    [[nodiscard]] status step(Accel&& a, State& x, State& v, State& acc, T t, T dt) const {
+        State last;
+        const status s = advance(a, x, v, t, dt, &acc, &last);
+        if (s == status::ok) detail::assign(acc, last);
+        return s;
+    }
+
+    /// Forgets the kept acceleration, so the next step evaluates a afresh. Call it after changing x or v
+    /// outside the stepper, or the force. A no-op for the tables that keep nothing.
+    constexpr void reset() noexcept {
+        if constexpr (fsal) cache_.next.clear();
+    }
+
+private:
+    detail::splitting_cache<State, fsal> cache_{};
+
+    // The step: the splitting of x' = v, v' = a(t, x) into the drift (x' = v, v' = 0) and the kick (x' = 0,
+    // v' = a(t, x)), each solved exactly, applied in the table's order with its coefficients times dt (see
+    // splitting_table), into new x and v that replace them only when every component is finite.
+    template <class Accel>
+    ODESTEP_INLINE static status advance(Accel& a, State& x, State& v, T t, T dt, const State* cached, State* last) {
+        // Two objects, not one struct: the force sees the position's address, and a velocity in the same
+        // object would then have to be stored before, and reloaded after, every evaluation not inlined.
+        // No up-front copy of x: a kick before any drift evaluates the force at the caller's x, unchanged.
+        // Nor of v when a force evaluation comes first (lazy_velocity): a value read before a call not
+        // inlined is held across it, at -Os on the stack (7 instructions a step, x86 Euler-Cromer). Else v
+        // is read before any evaluation anyway; the copy costs no more (fewer bytes on Cortex-M0+). Every
+        // table has a drift and a kick, so wx and wv are written in full before the test below.
+        State wx;
+        State wv;
+        if constexpr (!lazy_velocity) detail::assign(wv, v);
+        run(a, x, v, wx, wv, t, dt, cached, last, std::make_index_sequence<plan::updates>{});
+        // The finiteness test's sum (detail::finite_sum) of the new x and v, x's components first: any order
+        // serves (only a sum that fails goes on to the exact test), and this one needs the fewest register
+        // copies where the force has just taken x apart.
+        //
+        // A step that ends with a drift, x <- x + h v with h = c dt and v already final, needs x alone: for
+        // a v component that is +-Inf or NaN, h v is +-Inf or NaN (h = 0 included: 0 Inf is NaN), and so is
+        // x plus it, whatever x. So a finite new x proves the new v finite, and half the test goes.
+        T total = -T(0);  // x + (-0) is x, exactly: the compiler drops that first addition
+        ODESTEP_UNROLL
+        for (std::size_t n = 0; n < N; ++n) total += wx[n];
+        if constexpr (ends_with_kick) {
+            ODESTEP_UNROLL
+            for (std::size_t n = 0; n < N; ++n) total += wv[n];
+        }
+        if (!detail::finite_sum(total) && !(detail::each_finite(wx) && (!ends_with_kick || detail::each_finite(wv))))
+            return status::non_finite;
+        detail::assign(x, wx);
+        detail::assign(v, wv);
+        return status::ok;
+    }
+
+    template <class Accel, std::size_t... K>
+    ODESTEP_INLINE static void run(Accel& a, const State& x, const State& v, State& wx, State& wv, T t, T dt,
+                                   const State* cached, State* last, std::index_sequence<K...>) {
+        (update<K>(a, x, v, wx, wv, t, dt, cached, last), ...);
+    }
+
+    // Update K of the sequence, emitted only when its coefficient is not zero.
+    template <std::size_t K, class Accel>
+    ODESTEP_INLINE static void update(Accel& a, const State& x, const State& v, State& wx, State& wv, T t, T dt,
+                                      const State* cached, State* last) {
+        constexpr T c = plan::coefficient(K);
+        if constexpr (c != T(0)) {
+            const T h = scaled<K>(dt);
+            // What update K starts from: the caller's x until a drift is made; with lazy_velocity, the
+            // caller's v until a kick is made (without, wv is v's copy from the start).
+            const State& px = plan::drift_before(K) ? wx : x;
+            const State& pv = (!lazy_velocity || plan::kick_before(K)) ? wv : v;
+            if constexpr (!plan::is_kick(K)) {
+                ODESTEP_UNROLL
+                for (std::size_t n = 0; n < N; ++n) wx[n] = px[n] + h * pv[n];
+            } else if constexpr (fsal && K == plan::first) {
+                if (cached != nullptr) {
+                    kick(wv, pv, *cached, h);
+                } else {
+                    kick(wv, pv, detail::acceleration(a, t, px), h);
+                }
+            } else if constexpr (fsal && K == plan::last) {
+                *last = detail::acceleration(a, t + dt, px);  // at x_{n+1}: kept for the next step
+                kick(wv, pv, *last, h);
+            } else {
+                kick(wv, pv, detail::acceleration(a, kick_time<K>(t, dt), px), h);
+            }
+        }
+    }
+
+    // to = from + h acc, component by component (from may be to).
+    ODESTEP_INLINE static void kick(State& to, const State& from, const State& acc, T h) noexcept {
+        ODESTEP_UNROLL
+        for (std::size_t n = 0; n < N; ++n) to[n] = from[n] + h * acc[n];
+    }
+
+    // c_K dt for update K, without the multiplication when c_K is 1.
+    template <std::size_t K>
+    static constexpr T scaled(T dt) noexcept {
+        constexpr T c = plan::coefficient(K);
+        if constexpr (c == T(1)) {
+            return dt;
+        } else {
+            return c * dt;
+        }
+    }
+    // t + c dt, the time of kick K, with c the drift coefficients before it, summed.
+    template <std::size_t K>
+    static constexpr T kick_time(T t, T dt) noexcept {
+        constexpr T c = plan::time_fraction(K);
+        if constexpr (c == T(0)) {
+            return t;
+        } else if constexpr (c == T(1)) {
+            return t + dt;
+        } else {
+            return t + c * dt;
+        }
+    }
+};
+
+
+// The named steppers.
+template <class State> using euler_cromer = splitting<tables::euler_cromer, State>;
+template <class State> using euler_cromer_drift_first = splitting<tables::euler_cromer_drift_first, State>;
+template <class State> using velocity_verlet = splitting<tables::velocity_verlet, State>;
+template <class State> using leapfrog = splitting<tables::velocity_verlet, State>;
+template <class State> using position_verlet = splitting<tables::position_verlet, State>;
+template <class State> using forest_ruth = splitting<tables::forest_ruth, State>;
+template <class State> using yoshida6 = splitting<tables::yoshida6, State>;
+template <class State> using blanes_moan4 = splitting<tables::blanes_moan4, State>;
+
+}  // namespace odestep
+#endif
