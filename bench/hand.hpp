@@ -134,8 +134,7 @@ inline void dopri5(F f, std::array<double, N>& y, double t, double h, std::array
     f(t + c3 * h, y1, k3);
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a41 * k1[i] + a42 * k2[i] + a43 * k3[i]);
     f(t + c4 * h, y1, k4);
-    for (std::size_t i = 0; i < N; ++i)
-        y1[i] = y[i] + h * (a51 * k1[i] + a52 * k2[i] + a53 * k3[i] + a54 * k4[i]);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a51 * k1[i] + a52 * k2[i] + a53 * k3[i] + a54 * k4[i]);
     f(t + c5 * h, y1, k5);
     for (std::size_t i = 0; i < N; ++i)
         y1[i] = y[i] + h * (a61 * k1[i] + a62 * k2[i] + a63 * k3[i] + a64 * k4[i] + a65 * k5[i]);
@@ -200,8 +199,7 @@ inline void dop853(F f, std::array<double, N>& y, double t, double h) {
     f(t + c5 * h, y1, k5);
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a61 * k1[i] + a64 * k4[i] + a65 * k5[i]);
     f(t + c6 * h, y1, k6);
-    for (std::size_t i = 0; i < N; ++i)
-        y1[i] = y[i] + h * (a71 * k1[i] + a74 * k4[i] + a75 * k5[i] + a76 * k6[i]);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a71 * k1[i] + a74 * k4[i] + a75 * k5[i] + a76 * k6[i]);
     f(t + c7 * h, y1, k7);
     for (std::size_t i = 0; i < N; ++i)
         y1[i] = y[i] + h * (a81 * k1[i] + a84 * k4[i] + a85 * k5[i] + a86 * k6[i] + a87 * k7[i]);
@@ -210,20 +208,20 @@ inline void dop853(F f, std::array<double, N>& y, double t, double h) {
         y1[i] = y[i] + h * (a91 * k1[i] + a94 * k4[i] + a95 * k5[i] + a96 * k6[i] + a97 * k7[i] + a98 * k8[i]);
     f(t + c9 * h, y1, k9);
     for (std::size_t i = 0; i < N; ++i)
-        y1[i] = y[i] + h * (a101 * k1[i] + a104 * k4[i] + a105 * k5[i] + a106 * k6[i] + a107 * k7[i] +
-                            a108 * k8[i] + a109 * k9[i]);
+        y1[i] = y[i] + h * (a101 * k1[i] + a104 * k4[i] + a105 * k5[i] + a106 * k6[i] + a107 * k7[i] + a108 * k8[i] +
+                            a109 * k9[i]);
     f(t + c10 * h, y1, k10);
     for (std::size_t i = 0; i < N; ++i)
-        y1[i] = y[i] + h * (a111 * k1[i] + a114 * k4[i] + a115 * k5[i] + a116 * k6[i] + a117 * k7[i] +
-                            a118 * k8[i] + a119 * k9[i] + a1110 * k10[i]);
+        y1[i] = y[i] + h * (a111 * k1[i] + a114 * k4[i] + a115 * k5[i] + a116 * k6[i] + a117 * k7[i] + a118 * k8[i] +
+                            a119 * k9[i] + a1110 * k10[i]);
     f(t + c11 * h, y1, k11);
     for (std::size_t i = 0; i < N; ++i)
-        y1[i] = y[i] + h * (a121 * k1[i] + a124 * k4[i] + a125 * k5[i] + a126 * k6[i] + a127 * k7[i] +
-                            a128 * k8[i] + a129 * k9[i] + a1210 * k10[i] + a1211 * k11[i]);
+        y1[i] = y[i] + h * (a121 * k1[i] + a124 * k4[i] + a125 * k5[i] + a126 * k6[i] + a127 * k7[i] + a128 * k8[i] +
+                            a129 * k9[i] + a1210 * k10[i] + a1211 * k11[i]);
     f(t + h, y1, k12);
     for (std::size_t i = 0; i < N; ++i)
-        y[i] += h * (b1 * k1[i] + b6 * k6[i] + b7 * k7[i] + b8 * k8[i] + b9 * k9[i] + b10 * k10[i] +
-                     b11 * k11[i] + b12 * k12[i]);
+        y[i] += h * (b1 * k1[i] + b6 * k6[i] + b7 * k7[i] + b8 * k8[i] + b9 * k9[i] + b10 * k10[i] + b11 * k11[i] +
+                     b12 * k12[i]);
 }
 
 /// Runge-Kutta-Fehlberg 7(8), the eighth-order solution only (Fehlberg 1968, NASA TR R-287, Table X).
@@ -239,15 +237,13 @@ inline void rkf78(F f, std::array<double, N>& y, double t, double h) {
     constexpr double a61 = 1.0 / 20.0, a64 = 1.0 / 4.0, a65 = 1.0 / 5.0;
     constexpr double a71 = -25.0 / 108.0, a74 = 125.0 / 108.0, a75 = -65.0 / 27.0, a76 = 125.0 / 54.0;
     constexpr double a81 = 31.0 / 300.0, a85 = 61.0 / 225.0, a86 = -2.0 / 9.0, a87 = 13.0 / 900.0;
-    constexpr double a91 = 2.0, a94 = -53.0 / 6.0, a95 = 704.0 / 45.0, a96 = -107.0 / 9.0, a97 = 67.0 / 90.0,
-                     a98 = 3.0;
+    constexpr double a91 = 2.0, a94 = -53.0 / 6.0, a95 = 704.0 / 45.0, a96 = -107.0 / 9.0, a97 = 67.0 / 90.0, a98 = 3.0;
     constexpr double a101 = -91.0 / 108.0, a104 = 23.0 / 108.0, a105 = -976.0 / 135.0, a106 = 311.0 / 54.0,
                      a107 = -19.0 / 60.0, a108 = 17.0 / 6.0, a109 = -1.0 / 12.0;
-    constexpr double a121 = 3.0 / 205.0, a126 = -6.0 / 41.0, a127 = -3.0 / 205.0, a128 = -3.0 / 41.0,
-                     a129 = 3.0 / 41.0, a1210 = 6.0 / 41.0;
+    constexpr double a121 = 3.0 / 205.0, a126 = -6.0 / 41.0, a127 = -3.0 / 205.0, a128 = -3.0 / 41.0, a129 = 3.0 / 41.0,
+                     a1210 = 6.0 / 41.0;
     constexpr double a131 = -1777.0 / 4100.0, a134 = -341.0 / 164.0, a135 = 4496.0 / 1025.0, a136 = -289.0 / 82.0,
-                     a137 = 2193.0 / 4100.0, a138 = 51.0 / 82.0, a139 = 33.0 / 164.0, a1310 = 12.0 / 41.0,
-                     a1312 = 1.0;
+                     a137 = 2193.0 / 4100.0, a138 = 51.0 / 82.0, a139 = 33.0 / 164.0, a1310 = 12.0 / 41.0, a1312 = 1.0;
     constexpr double b6 = 34.0 / 105.0, b7 = 9.0 / 35.0, b8 = 9.0 / 35.0, b9 = 9.0 / 280.0, b10 = 9.0 / 280.0,
                      b12 = 41.0 / 840.0, b13 = 41.0 / 840.0;
     std::array<double, N> k1, k2, k3, k4, k5, k6, k7, k8, k9, k10, k12, k13, y1;
@@ -262,8 +258,7 @@ inline void rkf78(F f, std::array<double, N>& y, double t, double h) {
     f(t + c5 * h, y1, k5);
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a61 * k1[i] + a64 * k4[i] + a65 * k5[i]);
     f(t + c6 * h, y1, k6);
-    for (std::size_t i = 0; i < N; ++i)
-        y1[i] = y[i] + h * (a71 * k1[i] + a74 * k4[i] + a75 * k5[i] + a76 * k6[i]);
+    for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a71 * k1[i] + a74 * k4[i] + a75 * k5[i] + a76 * k6[i]);
     f(t + c7 * h, y1, k7);
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a81 * k1[i] + a85 * k5[i] + a86 * k6[i] + a87 * k7[i]);
     f(t + c8 * h, y1, k8);
@@ -271,20 +266,18 @@ inline void rkf78(F f, std::array<double, N>& y, double t, double h) {
         y1[i] = y[i] + h * (a91 * k1[i] + a94 * k4[i] + a95 * k5[i] + a96 * k6[i] + a97 * k7[i] + a98 * k8[i]);
     f(t + c9 * h, y1, k9);
     for (std::size_t i = 0; i < N; ++i)
-        y1[i] = y[i] + h * (a101 * k1[i] + a104 * k4[i] + a105 * k5[i] + a106 * k6[i] + a107 * k7[i] +
-                            a108 * k8[i] + a109 * k9[i]);
+        y1[i] = y[i] + h * (a101 * k1[i] + a104 * k4[i] + a105 * k5[i] + a106 * k6[i] + a107 * k7[i] + a108 * k8[i] +
+                            a109 * k9[i]);
     f(t + c10 * h, y1, k10);
     for (std::size_t i = 0; i < N; ++i)
-        y1[i] = y[i] + h * (a121 * k1[i] + a126 * k6[i] + a127 * k7[i] + a128 * k8[i] + a129 * k9[i] +
-                            a1210 * k10[i]);
+        y1[i] = y[i] + h * (a121 * k1[i] + a126 * k6[i] + a127 * k7[i] + a128 * k8[i] + a129 * k9[i] + a1210 * k10[i]);
     f(t, y1, k12);
     for (std::size_t i = 0; i < N; ++i)
-        y1[i] = y[i] + h * (a131 * k1[i] + a134 * k4[i] + a135 * k5[i] + a136 * k6[i] + a137 * k7[i] +
-                            a138 * k8[i] + a139 * k9[i] + a1310 * k10[i] + a1312 * k12[i]);
+        y1[i] = y[i] + h * (a131 * k1[i] + a134 * k4[i] + a135 * k5[i] + a136 * k6[i] + a137 * k7[i] + a138 * k8[i] +
+                            a139 * k9[i] + a1310 * k10[i] + a1312 * k12[i]);
     f(t + h, y1, k13);
     for (std::size_t i = 0; i < N; ++i)
-        y[i] += h * (b6 * k6[i] + b7 * k7[i] + b8 * k8[i] + b9 * k9[i] + b10 * k10[i] + b12 * k12[i] +
-                     b13 * k13[i]);
+        y[i] += h * (b6 * k6[i] + b7 * k7[i] + b8 * k8[i] + b9 * k9[i] + b10 * k10[i] + b12 * k12[i] + b13 * k13[i]);
 }
 
 /// Velocity Verlet for x'' = a(x), with the acceleration at x kept between steps in `acc` (the caller sets
@@ -306,8 +299,7 @@ inline void velocity_verlet(F f, std::array<T, N>& x, std::array<T, N>& v, std::
 /// a_new is (h/2 times an Inf is Inf, or NaN for h = 0). x_new must be: the force may map a non-finite x
 /// to a finite acceleration. On failure x, v and acc are untouched.
 template <class T, std::size_t N, class F>
-inline int velocity_verlet_checked(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, N>& acc, T t,
-                                   T h) {
+inline int velocity_verlet_checked(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, N>& acc, T t, T h) {
     const T hh2 = h * h * T(0.5);
     const T h2 = h * T(0.5);
     std::array<T, N> xn, vn, an;
@@ -435,8 +427,7 @@ inline void forest_ruth(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h)
 template <class T, std::size_t N, class F>
 inline int forest_ruth_checked(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
     using c = forest_ruth_coefficients<T>;
-    const T hd_outer = c::d_outer * h, hd_inner = c::d_inner * h, hk_outer = c::k_outer * h,
-            hk_inner = c::k_inner * h;
+    const T hd_outer = c::d_outer * h, hd_inner = c::d_inner * h, hk_outer = c::k_outer * h, hk_inner = c::k_inner * h;
     std::array<T, N> xn, vn, acc;
     for (std::size_t i = 0; i < N; ++i) xn[i] = x[i] + hd_outer * v[i];
     f(t + c::c1 * h, xn, acc);
@@ -595,7 +586,8 @@ inline void adams_bashforth_moulton4(F f, std::array<T, N>& y, ab4_history<T, N>
     std::array<T, N>& f3 = hist.past[hist.slot];
     const T h24 = h * (T(1) / T(24));
     std::array<T, N> p, fp;
-    for (std::size_t i = 0; i < N; ++i) p[i] = y[i] + h24 * (T(55) * fn[i] - T(59) * f1[i] + T(37) * f2[i] - T(9) * f3[i]);
+    for (std::size_t i = 0; i < N; ++i)
+        p[i] = y[i] + h24 * (T(55) * fn[i] - T(59) * f1[i] + T(37) * f2[i] - T(9) * f3[i]);
     f(t + h, p, fp);
     for (std::size_t i = 0; i < N; ++i) y[i] += h24 * (T(9) * fp[i] + T(19) * fn[i] - T(5) * f1[i] + f2[i]);
     f3 = fn;

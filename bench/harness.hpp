@@ -49,7 +49,7 @@ struct variant {
     const char* key;          // odestep, hand, odeint, gsl, or an extra (shown but not a reference)
     const char* description;  // the method as this variant computes it
     step_fn<State> step;
-    bool same_method;         // the same arithmetic as odestep, so it must agree with it to round-off
+    bool same_method;  // the same arithmetic as odestep, so it must agree with it to round-off
     // For a variant that keeps something between steps (velocity Verlet's last acceleration): called before
     // every run from y0 at t0 (check, count, each timed batch), as a caller starts a new run: odestep's
     // reset(), the hand loop's a(x0) before its loop, Odeint's reset(). Stateless variants leave it null.
@@ -62,11 +62,11 @@ struct problem {
     State y0;
     value_t<State> t0;
     value_t<State> dt;
-    int check_steps;        // the checked stretch; also one timed batch (the state is reset after it)
-    State reference;        // the exact solution at t0 + check_steps * dt, to well below tol_method
-    double tol_same;        // |y - y_odestep|_inf / max(1, |y_odestep|_inf), same-method variants
-    double tol_method;      // |y - reference|_inf / max(1, |reference|_inf), every variant
-    bool has_error;         // the step returns an error estimate: compare it among same-method variants
+    int check_steps;    // the checked stretch; also one timed batch (the state is reset after it)
+    State reference;    // the exact solution at t0 + check_steps * dt, to well below tol_method
+    double tol_same;    // |y - y_odestep|_inf / max(1, |y_odestep|_inf), same-method variants
+    double tol_method;  // |y - reference|_inf / max(1, |reference|_inf), every variant
+    bool has_error;     // the step returns an error estimate: compare it among same-method variants
 };
 
 /// y(t1) of y' = f(y) from y0 at t0 by DOP853 in long double with `steps` steps: the reference the checks

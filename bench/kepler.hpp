@@ -64,9 +64,11 @@ inline bench::problem<phase> problem(const char* name, double tol_same, double t
     const long double e = 0.5L;
     const int steps = 500;
     const double dt = 2 * 3.14159265358979323846 / 1000;
-    return {name, exact(e, 0.0L),  // x = (0.5, 0), v = (0, sqrt 3)
-            0.0, dt, steps, exact(e, static_cast<long double>(steps) * static_cast<long double>(dt)),
-            tol_same, tol_method, false};
+    return {name,     exact(e, 0.0L),  // x = (0.5, 0), v = (0, sqrt 3)
+            0.0,      dt,
+            steps,    exact(e, static_cast<long double>(steps) * static_cast<long double>(dt)),
+            tol_same, tol_method,
+            false};
 }
 
 }  // namespace bench::kepler_case

@@ -20,10 +20,10 @@ using bench::kepler_case::hand_force;
 
 odestep::beeman<vec> odestep_beeman;
 odestep::beeman<vec>::history odestep_history;  // the caller-kept form's a_n, a_{n-1} and started flag
-vec hand_acc;       // the hand loop's a_n, a(x) of the current x
-vec hand_acc_prev;  // and its a_{n-1}
-bool hand_started;  // false: the next step is the run's first, a velocity Verlet step
-vec checked_acc;    // the checked hand loop's, likewise
+vec hand_acc;                                   // the hand loop's a_n, a(x) of the current x
+vec hand_acc_prev;                              // and its a_{n-1}
+bool hand_started;                              // false: the next step is the run's first, a velocity Verlet step
+vec checked_acc;                                // the checked hand loop's, likewise
 vec checked_acc_prev;
 bool checked_started;
 
@@ -50,20 +50,21 @@ BENCH_STEP int bench_step_kepler_beeman_hand(State& y, State&, double t, double 
     return 0;
 }
 BENCH_STEP int bench_step_kepler_beeman_hand_checked(State& y, State&, double t, double dt) {
-    return bench::hand::beeman_checked(hand_force, y.first, y.second, checked_acc, checked_acc_prev, checked_started,
-                                       t, dt);
+    return bench::hand::beeman_checked(hand_force, y.first, y.second, checked_acc, checked_acc_prev, checked_started, t,
+                                       dt);
 }
 
 int main(int argc, char** argv) {
-    const bench::problem<State> p = bench::kepler_case::problem("kepler_beeman",
-        // Round-off: 500 steps, a few ulps each (the hand loop groups x + (h v + ...)
-        // and multiplies by 1/6 where odestep divides by 6); measured 5.3e-15 at -O2 and
-        // -Os.
-        1e-12,
-        // Beeman (order 2) with 1000 steps per orbit: 3.02e-4 relative at aphelion
-        // (7.62e-5 with 2000 steps, 1.91e-5 with 4000: h^2). Euler-Cromer (order 1) with
-        // the same step is 1.9e-2 off.
-        6e-4);
+    const bench::problem<State> p =
+        bench::kepler_case::problem("kepler_beeman",
+                                    // Round-off: 500 steps, a few ulps each (the hand loop groups x + (h v + ...)
+                                    // and multiplies by 1/6 where odestep divides by 6); measured 5.3e-15 at -O2 and
+                                    // -Os.
+                                    1e-12,
+                                    // Beeman (order 2) with 1000 steps per orbit: 3.02e-4 relative at aphelion
+                                    // (7.62e-5 with 2000 steps, 1.91e-5 with 4000: h^2). Euler-Cromer (order 1) with
+                                    // the same step is 1.9e-2 off.
+                                    6e-4);
     return bench::main<State>(
         argc, argv, p,
         {{"odestep",

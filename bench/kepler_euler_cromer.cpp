@@ -59,16 +59,17 @@ BENCH_STEP int bench_step_kepler_euler_cromer_odeint(State& y, State&, double t,
 }
 
 int main(int argc, char** argv) {
-    const bench::problem<State> p = bench::kepler_case::problem("kepler_euler_cromer",
-        // Round-off: 500 steps of the same two updates in the same order; measured 0
-        // (bit for bit) at -O2 and -Os.
-        1e-12,
-        // Euler-Cromer (order 1) with 1000 steps per orbit: 1.88e-2 relative at
-        // aphelion (9.54e-3 with 2000 steps, 4.80e-3 with 4000: h). Odeint's drift-first
-        // adjoint: 1.99e-2 (9.81e-3, 4.87e-3; bit for bit odestep's
-        // euler_cromer_drift_first, 3.9e-2 from Euler-Cromer). Forward Euler with the same
-        // step is 9.7e-2 off.
-        4e-2);
+    const bench::problem<State> p =
+        bench::kepler_case::problem("kepler_euler_cromer",
+                                    // Round-off: 500 steps of the same two updates in the same order; measured 0
+                                    // (bit for bit) at -O2 and -Os.
+                                    1e-12,
+                                    // Euler-Cromer (order 1) with 1000 steps per orbit: 1.88e-2 relative at
+                                    // aphelion (9.54e-3 with 2000 steps, 4.80e-3 with 4000: h). Odeint's drift-first
+                                    // adjoint: 1.99e-2 (9.81e-3, 4.87e-3; bit for bit odestep's
+                                    // euler_cromer_drift_first, 3.9e-2 from Euler-Cromer). Forward Euler with the same
+                                    // step is 9.7e-2 off.
+                                    4e-2);
     return bench::main<State>(
         argc, argv, p,
         {{"odestep", "odestep::euler_cromer<std::array<double, 2>> step(a, x, v, t, dt)",

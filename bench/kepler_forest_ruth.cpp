@@ -45,15 +45,16 @@ BENCH_STEP int bench_step_kepler_forest_ruth_odeint(State& y, State&, double t, 
 }
 
 int main(int argc, char** argv) {
-    const bench::problem<State> p = bench::kepler_case::problem("kepler_forest_ruth",
-        // Round-off: 500 steps of the same seven updates, with the same coefficients
-        // rounded the same way, in the same order; measured 0 (bit for bit) at -O2 and -Os.
-        1e-12,
-        // Forest-Ruth (order 4) with 1000 steps per orbit: 6.09e-8 relative at aphelion
-        // (3.81e-9 with 2000 steps, 2.38e-10 with 4000: h^4); Odeint's McLachlan method
-        // 2.56e-9 (1.60e-10, 1.00e-11: h^4). Position Verlet (order 2) with the same
-        // step is 1.2e-4 off.
-        2e-7);
+    const bench::problem<State> p =
+        bench::kepler_case::problem("kepler_forest_ruth",
+                                    // Round-off: 500 steps of the same seven updates, with the same coefficients
+                                    // rounded the same way, in the same order; measured 0 (bit for bit) at -O2 and -Os.
+                                    1e-12,
+                                    // Forest-Ruth (order 4) with 1000 steps per orbit: 6.09e-8 relative at aphelion
+                                    // (3.81e-9 with 2000 steps, 2.38e-10 with 4000: h^4); Odeint's McLachlan method
+                                    // 2.56e-9 (1.60e-10, 1.00e-11: h^4). Position Verlet (order 2) with the same
+                                    // step is 1.2e-4 off.
+                                    2e-7);
     return bench::main<State>(
         argc, argv, p,
         {{"odestep", "odestep::forest_ruth<std::array<double, 2>> step(a, x, v, t, dt) (3 evaluations)",

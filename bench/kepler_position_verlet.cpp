@@ -31,14 +31,15 @@ BENCH_STEP int bench_step_kepler_position_verlet_hand_checked(State& y, State&, 
 }
 
 int main(int argc, char** argv) {
-    const bench::problem<State> p = bench::kepler_case::problem("kepler_position_verlet",
-        // Round-off: 500 steps of the same three updates in the same order; measured 0
-        // (bit for bit) at -O2 and -Os.
-        1e-12,
-        // Position Verlet (order 2) with 1000 steps per orbit: 1.23e-4 relative at
-        // aphelion (3.07e-5 with 2000 steps, 7.67e-6 with 4000: h^2). Euler-Cromer
-        // (order 1) with the same step is 1.9e-2 off.
-        3e-4);
+    const bench::problem<State> p =
+        bench::kepler_case::problem("kepler_position_verlet",
+                                    // Round-off: 500 steps of the same three updates in the same order; measured 0
+                                    // (bit for bit) at -O2 and -Os.
+                                    1e-12,
+                                    // Position Verlet (order 2) with 1000 steps per orbit: 1.23e-4 relative at
+                                    // aphelion (3.07e-5 with 2000 steps, 7.67e-6 with 4000: h^2). Euler-Cromer
+                                    // (order 1) with the same step is 1.9e-2 off.
+                                    3e-4);
     return bench::main<State>(
         argc, argv, p,
         {{"odestep", "odestep::position_verlet<std::array<double, 2>> step(a, x, v, t, dt)",

@@ -20,8 +20,8 @@ using bench::kepler_case::hand_force;
 constexpr auto odeint_force = [](const vec& x, const vec&, vec& a, double) { bench::kepler<double>(x, a); };
 
 odestep::velocity_verlet<vec> odestep_vv;
-vec odestep_acc;  // odestep's explicit form: the caller keeps a(t, x), as the hand loop does
-vec hand_acc;     // the hand loop's kept acceleration, a(x) of the current x
+vec odestep_acc;       // odestep's explicit form: the caller keeps a(t, x), as the hand loop does
+vec hand_acc;          // the hand loop's kept acceleration, a(x) of the current x
 vec hand_checked_acc;  // the checked hand loop's, likewise
 boost::numeric::odeint::velocity_verlet<vec> odeint_vv;
 
@@ -52,17 +52,19 @@ BENCH_STEP int bench_step_kepler_verlet_odeint(State& y, State&, double t, doubl
 }
 
 int main(int argc, char** argv) {
-    const bench::problem<State> p = bench::kepler_case::problem("kepler_verlet",
-        // Round-off: 500 steps, a few ulps each, through perihelion (|v| = sqrt 3)
-        // to aphelion; measured 1e-15 to 3e-15 between the arithmetic forms.
-        1e-12,
-        // Velocity Verlet (order 2) with 1000 steps per orbit: 2.66e-4 relative at
-        // aphelion (6.65e-5 with 2000 steps, 1.66e-5 with 4000: h^2). Euler-Cromer
-        // (order 1) with the same step is 1.9e-2 off.
-        5e-4);
+    const bench::problem<State> p =
+        bench::kepler_case::problem("kepler_verlet",
+                                    // Round-off: 500 steps, a few ulps each, through perihelion (|v| = sqrt 3)
+                                    // to aphelion; measured 1e-15 to 3e-15 between the arithmetic forms.
+                                    1e-12,
+                                    // Velocity Verlet (order 2) with 1000 steps per orbit: 2.66e-4 relative at
+                                    // aphelion (6.65e-5 with 2000 steps, 1.66e-5 with 4000: h^2). Euler-Cromer
+                                    // (order 1) with the same step is 1.9e-2 off.
+                                    5e-4);
     return bench::main<State>(
         argc, argv, p,
-        {{"odestep", "odestep::velocity_verlet<std::array<double, 2>> step(a, x, v, acc, t, dt), acc kept by the caller",
+        {{"odestep",
+          "odestep::velocity_verlet<std::array<double, 2>> step(a, x, v, acc, t, dt), acc kept by the caller",
           bench_step_kepler_verlet_odestep, true, start_odestep},
          {"odestep_kept", "the same stepper's step(a, x, v, t, dt), acc kept and checked by the stepper",
           bench_step_kepler_verlet_odestep_kept, true, start_odestep_kept},

@@ -53,15 +53,15 @@ int main(int argc, char** argv) {
     const State y0{-8.0, 8.0, 27.0};
     const double dt = 0.005;
     const int steps = 100;
-    bench::problem<State> p{"lorenz_ab4", y0, 0.0, dt, steps,
-                            bench::reference_solution<3>(
-                                [](long double, const auto& y, auto& d) { bench::lorenz<long double>(y, d); },
-                                y0, 0.0L, steps * 0.005L, 16 * steps),
-                            // Round-off: 100 steps of a few ulps each, amplified a few times over t = 0.5.
-                            1e-12,
-                            // AB4 with h = 0.005 on Lorenz: 2.22e-5 relative at t = 0.5 (1.40e-6 with h =
-                            // 0.0025: h^4); three-step Adams-Bashforth (order 3) misses by 2.5e-4.
-                            5e-5, false};
+    bench::problem<State> p{
+        "lorenz_ab4", y0, 0.0, dt, steps,
+        bench::reference_solution<3>([](long double, const auto& y, auto& d) { bench::lorenz<long double>(y, d); }, y0,
+                                     0.0L, steps * 0.005L, 16 * steps),
+        // Round-off: 100 steps of a few ulps each, amplified a few times over t = 0.5.
+        1e-12,
+        // AB4 with h = 0.005 on Lorenz: 2.22e-5 relative at t = 0.5 (1.40e-6 with h =
+        // 0.0025: h^4); three-step Adams-Bashforth (order 3) misses by 2.5e-4.
+        5e-5, false};
     return bench::main<State>(
         argc, argv, p,
         {{"odestep", "odestep::adams_bashforth4 (rk4 start), history kept and checked by the stepper",

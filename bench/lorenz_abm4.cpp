@@ -22,8 +22,8 @@ constexpr auto odeint_rhs = [](const State& y, State& d, double) { bench::lorenz
 namespace odeint = boost::numeric::odeint;
 using odeint_abm4_type =
     odeint::adams_bashforth_moulton<4, State, double, State, double, odeint::algebra_dispatcher<State>::algebra_type,
-                            odeint::operations_dispatcher<State>::operations_type, odeint::initially_resizer,
-                            odeint::runge_kutta4<State>>;
+                                    odeint::operations_dispatcher<State>::operations_type, odeint::initially_resizer,
+                                    odeint::runge_kutta4<State>>;
 
 odestep::adams_bashforth_moulton4<State> odestep_abm4;
 bench::hand::ab4_history<double, 3> hand_hist;
@@ -55,15 +55,15 @@ int main(int argc, char** argv) {
     const State y0{-8.0, 8.0, 27.0};
     const double dt = 0.005;
     const int steps = 100;
-    bench::problem<State> p{"lorenz_abm4", y0, 0.0, dt, steps,
-                            bench::reference_solution<3>(
-                                [](long double, const auto& y, auto& d) { bench::lorenz<long double>(y, d); },
-                                y0, 0.0L, steps * 0.005L, 16 * steps),
-                            // Round-off: 100 steps of a few ulps each, amplified a few times over t = 0.5.
-                            1e-12,
-                            // ABM4 with h = 0.005 on Lorenz: 1.69e-6 relative at t = 0.5 (1.06e-7 with h =
-                            // 0.0025: h^4); Adams-Bashforth 4 alone misses by 2.2e-5.
-                            4e-6, false};
+    bench::problem<State> p{
+        "lorenz_abm4", y0, 0.0, dt, steps,
+        bench::reference_solution<3>([](long double, const auto& y, auto& d) { bench::lorenz<long double>(y, d); }, y0,
+                                     0.0L, steps * 0.005L, 16 * steps),
+        // Round-off: 100 steps of a few ulps each, amplified a few times over t = 0.5.
+        1e-12,
+        // ABM4 with h = 0.005 on Lorenz: 1.69e-6 relative at t = 0.5 (1.06e-7 with h =
+        // 0.0025: h^4); Adams-Bashforth 4 alone misses by 2.2e-5.
+        4e-6, false};
     return bench::main<State>(
         argc, argv, p,
         {{"odestep", "odestep::adams_bashforth_moulton4 (PECE, rk4 start), history kept and checked by the stepper",

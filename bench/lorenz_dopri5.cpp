@@ -47,25 +47,24 @@ int main(int argc, char** argv) {
     const double dt = 0.005;
     const int steps = 100;
     odeint_dopri5_fsal.reset();  // each run starts from y0: the timing and check loops reset the state
-    bench::problem<State> p{"lorenz_dopri5", y0, 0.0, dt, steps,
-                            bench::reference_solution<3>(
-                                [](long double, const auto& y, auto& d) { bench::lorenz<long double>(y, d); },
-                                y0, 0.0L, steps * 0.005L, 16 * steps),
-                            // Round-off: 100 steps of a few ulps each, amplified a few times over t = 0.5.
-                            1e-12,
-                            // Fifth order with h = 0.005: 2.8e-10 relative; GSL rkf45 advances with
-                            // its fourth-order solution: 1.6e-9.
-                            1e-8, true};
-    return bench::main<State>(
-        argc, argv, p,
-        {{"odestep", "odestep::dormand_prince54, step with error (7 evaluations)", bench_step_lorenz_dopri5_odestep,
-          true},
-         {"hand", "hand-written DOPRI5 with error, dopri5.f stage by stage (7 evaluations)",
-          bench_step_lorenz_dopri5_hand, true},
-         {"odeint", "Odeint runge_kutta_dopri5 reset() + do_step with error (7 evaluations)",
-          bench_step_lorenz_dopri5_odeint, true},
-         {"odeint_fsal", "Odeint runge_kutta_dopri5 do_step with error, FSAL (6 evaluations)",
-          bench_step_lorenz_dopri5_odeint_fsal, true},
-         {"gsl", "GSL rkf45 (no Dormand-Prince 5(4) in GSL; 6 evaluations, error estimate)",
-          bench_step_lorenz_dopri5_gsl, false}});
+    bench::problem<State> p{
+        "lorenz_dopri5", y0, 0.0, dt, steps,
+        bench::reference_solution<3>([](long double, const auto& y, auto& d) { bench::lorenz<long double>(y, d); }, y0,
+                                     0.0L, steps * 0.005L, 16 * steps),
+        // Round-off: 100 steps of a few ulps each, amplified a few times over t = 0.5.
+        1e-12,
+        // Fifth order with h = 0.005: 2.8e-10 relative; GSL rkf45 advances with
+        // its fourth-order solution: 1.6e-9.
+        1e-8, true};
+    return bench::main<State>(argc, argv, p,
+                              {{"odestep", "odestep::dormand_prince54, step with error (7 evaluations)",
+                                bench_step_lorenz_dopri5_odestep, true},
+                               {"hand", "hand-written DOPRI5 with error, dopri5.f stage by stage (7 evaluations)",
+                                bench_step_lorenz_dopri5_hand, true},
+                               {"odeint", "Odeint runge_kutta_dopri5 reset() + do_step with error (7 evaluations)",
+                                bench_step_lorenz_dopri5_odeint, true},
+                               {"odeint_fsal", "Odeint runge_kutta_dopri5 do_step with error, FSAL (6 evaluations)",
+                                bench_step_lorenz_dopri5_odeint_fsal, true},
+                               {"gsl", "GSL rkf45 (no Dormand-Prince 5(4) in GSL; 6 evaluations, error estimate)",
+                                bench_step_lorenz_dopri5_gsl, false}});
 }

@@ -40,24 +40,23 @@ int main(int argc, char** argv) {
     const State y0{-8.0, 8.0, 27.0};
     const double dt = 0.005;
     const int steps = 100;
-    bench::problem<State> p{"lorenz_rk4", y0, 0.0, dt, steps,
-                            bench::reference_solution<3>(
-                                [](long double, const auto& y, auto& d) { bench::lorenz<long double>(y, d); },
-                                y0, 0.0L, steps * 0.005L, 16 * steps),
-                            // Round-off: 100 steps of a few ulps each, amplified a few times over t = 0.5.
-                            1e-12,
-                            // RK4 with h = 0.005 on Lorenz: global error 3.5e-8 relative (GSL, which steps
-                            // by h/2: 2e-9); a step of lower order misses this by orders of magnitude.
-                            1e-7, false};
-    return bench::main<State>(argc, argv, p,
-                              {{"odestep", "odestep::rk4", bench_step_lorenz_rk4_odestep, true},
-                               {"hand", "hand-written RK4 loop", bench_step_lorenz_rk4_hand, true},
-                               {"hand_checked",
-                                "the hand loop, checked: NaN/Inf in the new y fails the step, which is rolled back "
-                                "(hand.hpp rk4_checked)",
-                                bench_step_lorenz_rk4_hand_checked, true},
-                               {"odeint", "Odeint runge_kutta4<std::array> do_step", bench_step_lorenz_rk4_odeint,
-                                true},
-                               {"gsl", "GSL rk4 (step doubling: 11 f evaluations, error estimate)",
-                                bench_step_lorenz_rk4_gsl, false}});
+    bench::problem<State> p{
+        "lorenz_rk4", y0, 0.0, dt, steps,
+        bench::reference_solution<3>([](long double, const auto& y, auto& d) { bench::lorenz<long double>(y, d); }, y0,
+                                     0.0L, steps * 0.005L, 16 * steps),
+        // Round-off: 100 steps of a few ulps each, amplified a few times over t = 0.5.
+        1e-12,
+        // RK4 with h = 0.005 on Lorenz: global error 3.5e-8 relative (GSL, which steps
+        // by h/2: 2e-9); a step of lower order misses this by orders of magnitude.
+        1e-7, false};
+    return bench::main<State>(
+        argc, argv, p,
+        {{"odestep", "odestep::rk4", bench_step_lorenz_rk4_odestep, true},
+         {"hand", "hand-written RK4 loop", bench_step_lorenz_rk4_hand, true},
+         {"hand_checked",
+          "the hand loop, checked: NaN/Inf in the new y fails the step, which is rolled back "
+          "(hand.hpp rk4_checked)",
+          bench_step_lorenz_rk4_hand_checked, true},
+         {"odeint", "Odeint runge_kutta4<std::array> do_step", bench_step_lorenz_rk4_odeint, true},
+         {"gsl", "GSL rk4 (step doubling: 11 f evaluations, error estimate)", bench_step_lorenz_rk4_gsl, false}});
 }

@@ -31,8 +31,8 @@ using State = std::array<double, 2>;
 
 constexpr double gravity = 9.8, vt = 30.0, v0 = 50.0;
 constexpr double dt = 0.01;
-constexpr int steps_full = 1000;   // t = 10 s: past the apex and the ground
-constexpr int steps_quiet = 300;   // t = 3 s: before the apex, nothing fires
+constexpr int steps_full = 1000;  // t = 10 s: past the apex and the ground
+constexpr int steps_quiet = 300;  // t = 3 s: before the apex, nothing fires
 
 constexpr auto rhs = [](double, const State& y, State& d) { bench::pebble<double>(y, d); };
 constexpr auto height = [](double, const State& y) { return y[0]; };
@@ -216,7 +216,8 @@ int extra_checks(const bench::problem<State>& p, const counted_run& cr) {
     bench::start_run(vs[2], p);
     bench::run_steps(vs[2], p, y_hand, err, p.check_steps);
     const bool bits = std::memcmp(y_odestep.data(), y_plain.data(), sizeof(State)) == 0;
-    std::snprintf(text, sizeof text, "bit-identical to odestep after %d steps: %s (record events leave the trajectory alone)",
+    std::snprintf(text, sizeof text,
+                  "bit-identical to odestep after %d steps: %s (record events leave the trajectory alone)",
                   p.check_steps, bits ? "yes" : "no");
     report("plain", bad0 == 0 && bad1 == 0 && bits, text);
 
@@ -238,8 +239,10 @@ int extra_checks(const bench::problem<State>& p, const counted_run& cr) {
     // The hand loop sees each event in the tick in which odestep locates it.
     bool same_ticks = true;
     for (int e = 0; e < 2; ++e)
-        same_ticks = same_ticks && hand_log.count[e] == 1 && seen.t[e] > hand_log.t[e] - dt && seen.t[e] <= hand_log.t[e];
-    std::snprintf(text, sizeof text, "apex seen at the end of the step to t=%.2f, ground to t=%.2f: the ticks odestep locates them in",
+        same_ticks =
+            same_ticks && hand_log.count[e] == 1 && seen.t[e] > hand_log.t[e] - dt && seen.t[e] <= hand_log.t[e];
+    std::snprintf(text, sizeof text,
+                  "apex seen at the end of the step to t=%.2f, ground to t=%.2f: the ticks odestep locates them in",
                   hand_log.t[0], hand_log.t[1]);
     report("hand", same_ticks, text);
 
@@ -286,8 +289,9 @@ int main(int argc, char** argv) {
         if (bench::count(quiet, vs, steps_quiet) != 0) return 1;
         // Single ticks of odestep's event stepper: the tick before the apex, the apex's, the ground's.
         const counted_run cr = count_evaluations(n);
-        const std::pair<const char*, int> ticks[] = {
-            {"odestep@quiet", cr.quiet_before_apex.tick}, {"odestep@apex", cr.apex.tick}, {"odestep@ground", cr.ground.tick}};
+        const std::pair<const char*, int> ticks[] = {{"odestep@quiet", cr.quiet_before_apex.tick},
+                                                     {"odestep@apex", cr.apex.tick},
+                                                     {"odestep@ground", cr.ground.tick}};
         for (const auto& [name, index] : ticks) {
             if (index < 0) continue;
             State y = full.y0, err{};

@@ -48,8 +48,18 @@ inline void three_body(const In& y, Out& d) {
 /// three-body solution, so a short run is smooth and nothing comes close.
 template <class T>
 constexpr std::array<T, 12> figure_eight() {
-    return {T(0.97000436L),  T(-0.24308753L), T(0),           T(0),           T(-0.97000436L), T(0.24308753L),
-            T(0.466203685L), T(0.43236573L),  T(-0.93240737L), T(-0.86473146L), T(0.466203685L), T(0.43236573L)};
+    return {T(0.97000436L),
+            T(-0.24308753L),
+            T(0),
+            T(0),
+            T(-0.97000436L),
+            T(0.24308753L),
+            T(0.466203685L),
+            T(0.43236573L),
+            T(-0.93240737L),
+            T(-0.86473146L),
+            T(0.466203685L),
+            T(0.43236573L)};
 }
 
 /// The harmonic oscillator x'' = -x as a first-order system (x, v). Its rhs is two moves and a negation,

@@ -38,14 +38,14 @@ int main(int argc, char** argv) {
                             // RK4's own error with h = 0.01 (~1e-10) is far below float round-off, so
                             // this is the round-off bound again, against the exact cos t, -sin t.
                             1e-5, false};
-    return bench::main<State>(argc, argv, p,
-                              {{"odestep", "odestep::rk4<std::array<float, 2>>", bench_step_sho_float_rk4_odestep,
-                                true},
-                               {"hand", "hand-written RK4 loop, float", bench_step_sho_float_rk4_hand, true},
-                               {"hand_checked",
-                                "the hand loop, checked: NaN/Inf in the new y fails the step, which is rolled back "
-                                "(hand.hpp rk4_checked)",
-                                bench_step_sho_float_rk4_hand_checked, true},
-                               {"odeint", "Odeint runge_kutta4<std::array<float, 2>, float> do_step",
-                                bench_step_sho_float_rk4_odeint, true}});
+    return bench::main<State>(
+        argc, argv, p,
+        {{"odestep", "odestep::rk4<std::array<float, 2>>", bench_step_sho_float_rk4_odestep, true},
+         {"hand", "hand-written RK4 loop, float", bench_step_sho_float_rk4_hand, true},
+         {"hand_checked",
+          "the hand loop, checked: NaN/Inf in the new y fails the step, which is rolled back "
+          "(hand.hpp rk4_checked)",
+          bench_step_sho_float_rk4_hand_checked, true},
+         {"odeint", "Odeint runge_kutta4<std::array<float, 2>, float> do_step", bench_step_sho_float_rk4_odeint,
+          true}});
 }

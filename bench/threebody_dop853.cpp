@@ -40,16 +40,16 @@ int main(int argc, char** argv) {
     const State y0 = bench::figure_eight<double>();
     const double dt = 0.05;
     const int steps = 40;
-    bench::problem<State> p{"threebody_dop853", y0, 0.0, dt, steps,
-                            bench::reference_solution<12>(
-                                [](long double, const auto& y, auto& d) { bench::three_body<long double>(y, d); },
-                                y0, 0.0L, steps * 0.05L, 16 * steps),
-                            // Round-off: DOP853's coefficients reach 43 in magnitude, so each stage input
-                            // carries a few hundred ulps of cancellation; 40 steps of that.
-                            1e-12,
-                            // Eighth order with h = 0.05 over a third of the period: 7e-12 relative
-                            // (RKF78 2.6e-11, rk8pd 5e-12); a seventh-order slip would be ~1e-9.
-                            1e-10, false};
+    bench::problem<State> p{
+        "threebody_dop853", y0, 0.0, dt, steps,
+        bench::reference_solution<12>([](long double, const auto& y, auto& d) { bench::three_body<long double>(y, d); },
+                                      y0, 0.0L, steps * 0.05L, 16 * steps),
+        // Round-off: DOP853's coefficients reach 43 in magnitude, so each stage input
+        // carries a few hundred ulps of cancellation; 40 steps of that.
+        1e-12,
+        // Eighth order with h = 0.05 over a third of the period: 7e-12 relative
+        // (RKF78 2.6e-11, rk8pd 5e-12); a seventh-order slip would be ~1e-9.
+        1e-10, false};
     return bench::main<State>(
         argc, argv, p,
         {{"odestep", "odestep::dop853 (12 evaluations)", bench_step_threebody_dop853_odestep, true},

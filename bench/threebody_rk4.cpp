@@ -40,23 +40,22 @@ int main(int argc, char** argv) {
     const State y0 = bench::figure_eight<double>();
     const double dt = 0.01;
     const int steps = 100;
-    bench::problem<State> p{"threebody_rk4", y0, 0.0, dt, steps,
-                            bench::reference_solution<12>(
-                                [](long double, const auto& y, auto& d) { bench::three_body<long double>(y, d); },
-                                y0, 0.0L, steps * 0.01L, 16 * steps),
-                            // Round-off: 100 steps of a few ulps each on a smooth, stable orbit.
-                            1e-12,
-                            // RK4 with h = 0.01 over a sixth of the figure-eight's period: 1.3e-8 relative.
-                            1e-7, false};
-    return bench::main<State>(argc, argv, p,
-                              {{"odestep", "odestep::rk4", bench_step_threebody_rk4_odestep, true},
-                               {"hand", "hand-written RK4 loop", bench_step_threebody_rk4_hand, true},
-                               {"hand_checked",
-                                "the hand loop, checked: NaN/Inf in the new y fails the step, which is rolled back "
-                                "(hand.hpp rk4_checked)",
-                                bench_step_threebody_rk4_hand_checked, true},
-                               {"odeint", "Odeint runge_kutta4<std::array> do_step",
-                                bench_step_threebody_rk4_odeint, true},
-                               {"gsl", "GSL rk4 (step doubling: 11 f evaluations, error estimate)",
-                                bench_step_threebody_rk4_gsl, false}});
+    bench::problem<State> p{
+        "threebody_rk4", y0, 0.0, dt, steps,
+        bench::reference_solution<12>([](long double, const auto& y, auto& d) { bench::three_body<long double>(y, d); },
+                                      y0, 0.0L, steps * 0.01L, 16 * steps),
+        // Round-off: 100 steps of a few ulps each on a smooth, stable orbit.
+        1e-12,
+        // RK4 with h = 0.01 over a sixth of the figure-eight's period: 1.3e-8 relative.
+        1e-7, false};
+    return bench::main<State>(
+        argc, argv, p,
+        {{"odestep", "odestep::rk4", bench_step_threebody_rk4_odestep, true},
+         {"hand", "hand-written RK4 loop", bench_step_threebody_rk4_hand, true},
+         {"hand_checked",
+          "the hand loop, checked: NaN/Inf in the new y fails the step, which is rolled back "
+          "(hand.hpp rk4_checked)",
+          bench_step_threebody_rk4_hand_checked, true},
+         {"odeint", "Odeint runge_kutta4<std::array> do_step", bench_step_threebody_rk4_odeint, true},
+         {"gsl", "GSL rk4 (step doubling: 11 f evaluations, error estimate)", bench_step_threebody_rk4_gsl, false}});
 }

@@ -30,20 +30,19 @@ int main(int argc, char** argv) {
     const State y0 = bench::figure_eight<double>();
     const double dt = 0.05;
     const int steps = 40;
-    bench::problem<State> p{"threebody_rkf78", y0, 0.0, dt, steps,
-                            bench::reference_solution<12>(
-                                [](long double, const auto& y, auto& d) { bench::three_body<long double>(y, d); },
-                                y0, 0.0L, steps * 0.05L, 16 * steps),
-                            // Round-off: 40 steps, coefficients up to 16 in magnitude.
-                            1e-12,
-                            // Eighth order with h = 0.05 over a third of the period: 2.6e-11 relative.
-                            1e-10, false};
-    return bench::main<State>(
-        argc, argv, p,
-        {{"odestep", "odestep::fehlberg78 (12 evaluations: stage 11 feeds only the estimate)",
-          bench_step_threebody_rkf78_odestep, true},
-         {"hand", "hand-written RKF78 eighth-order step, stage by stage (12 evaluations)",
-          bench_step_threebody_rkf78_hand, true},
-         {"odeint", "Odeint runge_kutta_fehlberg78 do_step (13 evaluations)", bench_step_threebody_rkf78_odeint,
-          true}});
+    bench::problem<State> p{
+        "threebody_rkf78", y0, 0.0, dt, steps,
+        bench::reference_solution<12>([](long double, const auto& y, auto& d) { bench::three_body<long double>(y, d); },
+                                      y0, 0.0L, steps * 0.05L, 16 * steps),
+        // Round-off: 40 steps, coefficients up to 16 in magnitude.
+        1e-12,
+        // Eighth order with h = 0.05 over a third of the period: 2.6e-11 relative.
+        1e-10, false};
+    return bench::main<State>(argc, argv, p,
+                              {{"odestep", "odestep::fehlberg78 (12 evaluations: stage 11 feeds only the estimate)",
+                                bench_step_threebody_rkf78_odestep, true},
+                               {"hand", "hand-written RKF78 eighth-order step, stage by stage (12 evaluations)",
+                                bench_step_threebody_rkf78_hand, true},
+                               {"odeint", "Odeint runge_kutta_fehlberg78 do_step (13 evaluations)",
+                                bench_step_threebody_rkf78_odeint, true}});
 }

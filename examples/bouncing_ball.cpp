@@ -24,9 +24,7 @@ constexpr double t_end = 5.0;
 
 struct ball_rhs {
     const bool* resting;
-    state operator()(double, const state& s) const noexcept {
-        return *resting ? state{0.0, 0.0} : state{s[1], -g};
-    }
+    state operator()(double, const state& s) const noexcept { return *resting ? state{0.0, 0.0} : state{s[1], -g}; }
 };
 
 auto height = [](double, const state& s) { return s[0]; };
@@ -45,8 +43,8 @@ int main() {
     bool never = false;
     state s{h, 0.0};
     const auto floor_a = odestep::make_event<state>(height, odestep::direction::falling, bounce);
-    const auto a = odestep::integrate(odestep::rk4<state>{}, ball_rhs{&never}, s, 0.0, t_end, dt,
-                                      odestep::watch(floor_a));
+    const auto a =
+        odestep::integrate(odestep::rk4<state>{}, ball_rhs{&never}, s, 0.0, t_end, dt, odestep::watch(floor_a));
     if (n < impacts.size()) return 1;
     for (std::size_t k = 0; k < impacts.size(); ++k) std::printf("impact %zu %.17g\n", k + 1, impacts[k]);
     std::printf("nolatch status %s t %.17g impacts %zu y %.17g\n", odestep::to_string(a.status), a.t, a.fired, s[0]);
@@ -67,8 +65,8 @@ int main() {
     };
     s = {h, 0.0};
     const auto floor_b = odestep::make_event<state>(height, odestep::direction::falling, bounce_or_rest);
-    const auto b = odestep::integrate(odestep::rk4<state>{}, ball_rhs{&resting}, s, 0.0, t_end, dt,
-                                      odestep::watch(floor_b));
+    const auto b =
+        odestep::integrate(odestep::rk4<state>{}, ball_rhs{&resting}, s, 0.0, t_end, dt, odestep::watch(floor_b));
     std::printf("latch status %s t %.17g impacts %zu rest_t %.17g y %.17g v %.17g resting %d\n",
                 odestep::to_string(b.status), b.t, b.fired, rest_t, s[0], s[1], resting ? 1 : 0);
     return m == b.fired ? 0 : 1;

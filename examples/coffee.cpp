@@ -16,9 +16,9 @@
 
 namespace {
 using state = std::array<double, 1>;  // T in C
-constexpr double r = 0.03;             // per minute
+constexpr double r = 0.03;            // per minute
 constexpr double Ts = 17.0;
-constexpr double dt = 0.1;              // minutes
+constexpr double dt = 0.1;  // minutes
 
 struct cooling {
     state operator()(double, const state& T) const noexcept { return {-r * (T[0] - Ts)}; }
@@ -37,8 +37,8 @@ int main() {
     std::printf("A cream_at 0 t62 %.17g T %.17g\n", ra.t, a[0]);
 
     // B: cream when the black coffee falls through 67, then cool to 62.
-    const auto cream = odestep::make_event<state>(below(67.0), odestep::direction::falling,
-                                                  [](double, state& T) { T[0] -= 5.0; });
+    const auto cream =
+        odestep::make_event<state>(below(67.0), odestep::direction::falling, [](double, state& T) { T[0] -= 5.0; });
     auto loop = odestep::make_event_stepper(odestep::rk4<state>{}, odestep::watch(cream, drinkable));
     state b{85.0};
     if (loop.start(0.0, dt, b) != odestep::status::ok) return 1;

@@ -113,7 +113,7 @@ int main() {
     constexpr float dt = 1.0f / static_cast<float>(rate_hz);
     constexpr std::uint32_t run_ticks = 2 * rate_hz;  // two seconds of simulated time
     constexpr std::uint32_t report_every = rate_hz / 4;
-    constexpr float tolerance = 1.0e-4f;               // float round-off over 2000 steps, well below RK4's
+    constexpr float tolerance = 1.0e-4f;  // float round-off over 2000 steps, well below RK4's
 
     const plant model{2.0f * 3.14159265f * 1.5f, 0.3f, 1.0f};  // 1.5 Hz, 30 % of critical damping
     const odestep::rk4<state> stepper{};

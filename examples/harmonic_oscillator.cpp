@@ -34,7 +34,8 @@ int run(const char* name, double dt) {
 }  // namespace
 
 int main() {
-    std::printf("# x'' = -x, x(0) = 1, v(0) = 0, integrated to t = 20 pi (10 periods); exact: x = 1, v = 0, E/E0 = 1\n");
+    std::printf(
+        "# x'' = -x, x(0) = 1, v(0) = 0, integrated to t = 20 pi (10 periods); exact: x = 1, v = 0, E/E0 = 1\n");
     std::printf("%-17s %-5s %6s %19s %19s %19s %19s\n", "method", "dt", "steps", "x", "v", "amplitude", "E/E0");
     int failed = 0;
     for (double dt : {0.1, 0.01}) {

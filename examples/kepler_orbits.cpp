@@ -30,18 +30,19 @@ int main() {
     double last = 0.0;
     double prev_t = 0.0;
     double prev_vx = v[0];
-    const auto r = odestep::integrate(odestep::velocity_verlet<vec>{}, gravity{}, x, v, 0.0, 10.25 * period, dt,
-                                      [&](double t, const vec&, const vec& vel) {
-                                          if (prev_vx != 0.0 && (prev_vx < 0.0) != (vel[0] < 0.0)) {  // v_x starts at 0: no turn there
-                                              // linear interpolation of the zero of v_x inside the step
-                                              const double tz = prev_t + (t - prev_t) * prev_vx / (prev_vx - vel[0]);
-                                              if (turning_points == 0) first = tz;
-                                              last = tz;
-                                              ++turning_points;
-                                          }
-                                          prev_t = t;
-                                          prev_vx = vel[0];
-                                      });
+    const auto r = odestep::integrate(
+        odestep::velocity_verlet<vec>{}, gravity{}, x, v, 0.0, 10.25 * period, dt,
+        [&](double t, const vec&, const vec& vel) {
+            if (prev_vx != 0.0 && (prev_vx < 0.0) != (vel[0] < 0.0)) {  // v_x starts at 0: no turn there
+                // linear interpolation of the zero of v_x inside the step
+                const double tz = prev_t + (t - prev_t) * prev_vx / (prev_vx - vel[0]);
+                if (turning_points == 0) first = tz;
+                last = tz;
+                ++turning_points;
+            }
+            prev_t = t;
+            prev_vx = vel[0];
+        });
     if (r.status != odestep::status::ok) return 1;
     const double measured = 2.0 * (last - first) / (turning_points - 1);
     std::printf("# Kepler orbit GM = 1 from (4, 0), v = (0, 0.5), velocity Verlet, dt = %g, t = 10.25 periods\n", dt);

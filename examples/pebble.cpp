@@ -46,15 +46,15 @@ flight throw_pebble(double dt, bool split) {
         out.apex_evals = calls - calls_at_grid - 4;  // minus the step that saw the sign change
         if (split) s[1] = 0.0;
     };
-    const auto apex = odestep::make_event<state>([](double, const state& s) { return s[1]; },
-                                                 odestep::direction::falling, note_apex);
+    const auto apex =
+        odestep::make_event<state>([](double, const state& s) { return s[1]; }, odestep::direction::falling, note_apex);
     // y = 0 at t0: the ground event arms only once y > 0 has been seen (events.hpp, begin/rearm).
-    const auto ground = odestep::make_event<state>([](double, const state& s) { return s[0]; },
-                                                   odestep::direction::falling);
+    const auto ground =
+        odestep::make_event<state>([](double, const state& s) { return s[0]; }, odestep::direction::falling);
     state s{0.0, v0};
-    const auto r = odestep::integrate(odestep::rk4<state>{}, drag_rhs{&calls}, s, 0.0, 60.0, dt,
-                                      odestep::watch(apex, ground),
-                                      [&](double, const state&) { calls_at_grid = calls; });
+    const auto r =
+        odestep::integrate(odestep::rk4<state>{}, drag_rhs{&calls}, s, 0.0, 60.0, dt, odestep::watch(apex, ground),
+                           [&](double, const state&) { calls_at_grid = calls; });
     out.ok = r.status == odestep::status::stopped_by_event && r.event == 1 && r.firings[0] == 1 && r.fired == 2;
     out.ground_t = r.t;
     out.impact_speed = std::fabs(s[1]);
@@ -83,8 +83,8 @@ int main() {
                 total += n;
                 if (n > worst) worst = n;
             }
-            std::printf("%-3s %-6s %-5g %22.17g %22.17g %22.17g %22.17g %6zu %6zu\n", "run",
-                        split ? "split" : "record", dt, f.apex_t, f.apex_y, f.ground_t, f.impact_speed, re[0], re[1]);
+            std::printf("%-3s %-6s %-5g %22.17g %22.17g %22.17g %22.17g %6zu %6zu\n", "run", split ? "split" : "record",
+                        dt, f.apex_t, f.apex_y, f.ground_t, f.impact_speed, re[0], re[1]);
         }
     }
     std::printf("resteps locations %zu mean %.3f max %zu\n", locations,

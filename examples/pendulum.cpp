@@ -43,9 +43,10 @@ errors run_newtonian(double theta0, double t_end, double dt) {
     angle v{0.0};
     const double e0 = energy(theta0, 0.0);
     errors e;
-    const auto r = odestep::integrate(Stepper{}, gravity{}, x, v, 0.0, t_end, dt, [&](double, const angle& q, const angle& p) {
-        e.worst = std::fmax(e.worst, std::fabs(energy(q[0], p[0]) - e0) / e0);
-    });
+    const auto r =
+        odestep::integrate(Stepper{}, gravity{}, x, v, 0.0, t_end, dt, [&](double, const angle& q, const angle& p) {
+            e.worst = std::fmax(e.worst, std::fabs(energy(q[0], p[0]) - e0) / e0);
+        });
     e.last = (energy(x[0], v[0]) - e0) / e0;
     if (r.status != odestep::status::ok) e.worst = -1;
     return e;
@@ -93,6 +94,7 @@ int main() {
                                           deviation = std::fmax(deviation, std::fabs(q[0] - small * std::cos(t)));
                                       });
     if (r.status != odestep::status::ok) return 1;
-    std::printf("small_angle theta0 %.9f max_deviation %.6e over 10 periods (velocity Verlet, dt = 0.01)\n", small, deviation);
+    std::printf("small_angle theta0 %.9f max_deviation %.6e over 10 periods (velocity Verlet, dt = 0.01)\n", small,
+                deviation);
     return 0;
 }

@@ -29,8 +29,8 @@ template <class Stepper>
 double range(double angle, double h, double k, double step) {
     state s{0.0, h, v0 * std::cos(angle), v0 * std::sin(angle)};
     // From h = 0 the event starts unarmed (g = 0 at t0) and arms once y > 0 has been seen.
-    const auto ground = odestep::make_event<state>([](double, const state& y) { return y[1]; },
-                                                   odestep::direction::falling);
+    const auto ground =
+        odestep::make_event<state>([](double, const state& y) { return y[1]; }, odestep::direction::falling);
     const auto r = odestep::integrate(Stepper{}, drag_rhs{k}, s, 0.0, 100.0, step, odestep::watch(ground));
     if (r.status != odestep::status::stopped_by_event) return std::nan("");
     return s[0];

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 int main() {
-    using state = std::array<double, 2>;                                  // x, v
+    using state = std::array<double, 2>;                                   // x, v
     auto sho = [](double, const state& y) { return state{y[1], -y[0]}; };  // x'' = -x
 
     odestep::rk4<state> stepper;

@@ -6,7 +6,7 @@ set -euo pipefail
 profile=${1:-test}
 packages=(g++ cmake make mawk)
 if [ "$profile" = test ]; then
-  packages+=(clang doctest-dev valgrind libboost-dev libgsl-dev binutils
+  packages+=(clang clang-format doctest-dev valgrind libboost-dev libgsl-dev binutils
              gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi qemu-system-arm)
 fi
 missing=()

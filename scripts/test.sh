@@ -18,6 +18,8 @@ host_preset() {
   cmake --preset "$1" >/dev/null && cmake --build --preset "$1" -j"$(nproc)" && ctest --preset "$1"
 }
 
+# The sources follow .clang-format.
+run format scripts/format.sh --check
 for preset in host host-cxx20 host-clang host-clang-cxx20 host-sanitize; do
   run "$preset" host_preset "$preset"
 done

@@ -5,8 +5,8 @@
 
 #include <array>
 #include <cstdlib>
-#include <new>
 #include <limits>
+#include <new>
 
 #include "support/alloc_counter.hpp"
 #include "support/methods.hpp"
@@ -36,10 +36,10 @@ std::size_t allocations_of_every_call() {
         state3<T> y{T(1), T(1), T(1)};
         (void)odestep::integrate(stepper, lorenz{}, y, T(0), T(1), T(0.01), [&](T, const state3<T>&) { ++observed; });
         (void)odestep::integrate_n_steps(stepper, lorenz{}, y, T(0), T(0.01), 10);
-        (void)odestep::integrate(stepper, lorenz{}, y, T(0), T(1), T(0));         // invalid_step
-        (void)odestep::integrate(stepper, lorenz{}, y, T(0), T(1), T(-0.1));      // wrong_direction
+        (void)odestep::integrate(stepper, lorenz{}, y, T(0), T(1), T(0));     // invalid_step
+        (void)odestep::integrate(stepper, lorenz{}, y, T(0), T(1), T(-0.1));  // wrong_direction
         auto poison = [](T, const state3<T>&) { return state3<T>{std::numeric_limits<T>::quiet_NaN(), T(0), T(0)}; };
-        (void)odestep::integrate(stepper, poison, y, T(0), T(1), T(0.1));         // non_finite
+        (void)odestep::integrate(stepper, poison, y, T(0), T(1), T(0.1));  // non_finite
         if constexpr (stepper_t::error_estimate) {
             state3<T> err{};
             (void)stepper.step(lorenz{}, y, T(0), T(0.01), err);
@@ -101,7 +101,6 @@ std::size_t allocations_of_newtonian_calls() {
     return odestep_test::allocations() - before;
 }
 
-
 template <class T>
 std::size_t allocations_of_boris_calls() {
     using vec = std::array<T, 3>;
@@ -133,7 +132,7 @@ std::size_t allocations_of_multistep_calls() {
         state3<T> y{T(1), T(1), T(1)};
         (void)odestep::integrate(stepper, lorenz{}, y, T(0), T(1), T(0.125), [](T, const state3<T>&) {});
         (void)odestep::integrate(stepper, lorenz{}, y, T(1), T(2), T(0.3));  // step_mismatch at the end
-        (void)stepper.step(lorenz{}, y, T(7), T(0.5));                        // step_mismatch (t, dt)
+        (void)stepper.step(lorenz{}, y, T(7), T(0.5));                       // step_mismatch (t, dt)
         stepper.reset();
         (void)odestep::integrate_n_steps(stepper, lorenz{}, y, T(0), T(0.01), 10);
         auto poison = [](T, const state3<T>&) { return state3<T>{std::numeric_limits<T>::quiet_NaN(), T(0), T(0)}; };
@@ -159,16 +158,17 @@ std::size_t allocations_of_event_calls() {
         const odestep::event_limits limits{0, 8, probes};
         state2 s{T(1), T(0)};
         // bounces until the event limit (a Zeno storm), then a terminal event, then bad settings, a NaN g
-        (void)odestep::integrate(odestep::rk4<state2>{}, fall, s, T(0), T(5), T(0.01),
-                                 odestep::watch(odestep::make_event<state2>(height, odestep::direction::falling, bounce))
-                                     .with_limits(limits),
-                                 [](T, const state2&) {});
+        (void)odestep::integrate(
+            odestep::rk4<state2>{}, fall, s, T(0), T(5), T(0.01),
+            odestep::watch(odestep::make_event<state2>(height, odestep::direction::falling, bounce))
+                .with_limits(limits),
+            [](T, const state2&) {});
         s = {T(1), T(0)};
         (void)odestep::integrate(odestep::rk4<state2>{}, fall, s, T(0), T(5), T(0.01),
                                  odestep::watch(odestep::make_event<state2>(height, odestep::direction::falling)));
-        (void)odestep::integrate(odestep::rk4<state2>{}, fall, s, T(0), T(5), T(0.01),
-                                 odestep::watch(odestep::make_event<state2>(height, odestep::direction::falling)
-                                                    .with_tolerance(T(-1))));
+        (void)odestep::integrate(
+            odestep::rk4<state2>{}, fall, s, T(0), T(5), T(0.01),
+            odestep::watch(odestep::make_event<state2>(height, odestep::direction::falling).with_tolerance(T(-1))));
         auto nan_g = [](T, const state2&) { return std::numeric_limits<T>::quiet_NaN(); };
         (void)odestep::integrate(odestep::rk4<state2>{}, fall, s, T(0), T(5), T(0.01),
                                  odestep::watch(odestep::make_event<state2>(nan_g, odestep::direction::falling)));

@@ -106,12 +106,15 @@ T run_everything() {
         auto g = [](T, const state4<T>& y) { return y[0]; };
         auto flip = [](T, state4<T>& y) { y[1] = -y[1]; };
         state4<T> y{T(1), T(0), T(1), T(0)};
-        const auto r = odestep::integrate(odestep::rk4<state4<T>>{}, oscillators{}, y, T(0), T(4), T(0.125),
-                                          odestep::watch<F>(odestep::make_event<state4<T>>(g, odestep::direction::falling, flip)));
+        const auto r =
+            odestep::integrate(odestep::rk4<state4<T>>{}, oscillators{}, y, T(0), T(4), T(0.125),
+                               odestep::watch<F>(odestep::make_event<state4<T>>(g, odestep::direction::falling, flip)));
         if (r.status == odestep::status::ok) sum += y[0];
-        auto loop = odestep::make_event_stepper(odestep::rk4<state4<T>>{},
-                                                odestep::watch<F>(odestep::make_event<state4<T>>(g, odestep::direction::either)));
-        if (loop.start(T(0), T(0.125), y) == odestep::status::ok && loop.tick(oscillators{}, y).status == odestep::status::ok)
+        auto loop = odestep::make_event_stepper(
+            odestep::rk4<state4<T>>{},
+            odestep::watch<F>(odestep::make_event<state4<T>>(g, odestep::direction::either)));
+        if (loop.start(T(0), T(0.125), y) == odestep::status::ok &&
+            loop.tick(oscillators{}, y).status == odestep::status::ok)
             sum += y[0];
     };
     events_with(odestep::bisection{});

@@ -99,7 +99,8 @@ TEST_CASE("integrate: a negative dt integrates backwards and lands on t1") {
     CHECK(y[0] == doctest::Approx(1.0).epsilon(1e-9));  // y(0) = 1; RK4 at h = 0.01: error ~ 1e-10
 }
 
-TEST_CASE("integrate: time comes from the step counter, so a float run of 10^6 steps of 1e-3 ends within one ULP of 1000") {
+TEST_CASE(
+    "integrate: time comes from the step counter, so a float run of 10^6 steps of 1e-3 ends within one ULP of 1000") {
     // A running sum t += 1e-3f would end near 991.1; t0 + i * dt is within one rounding of i * dt.
     using statef = std::array<float, 1>;
     odestep::euler<statef> stepper;

@@ -134,8 +134,7 @@ using time_t_of = identity_t<value_type_t<State>>;
 template <class Stepper, class System, class State, class Observer,
           std::enable_if_t<detail::is_observer_v<Observer>, int> = 0>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate(Stepper&& stepper, System&& f, State& y,
-                                                              detail::time_t_of<State> t0,
-                                                              detail::time_t_of<State> t1,
+                                                              detail::time_t_of<State> t0, detail::time_t_of<State> t1,
                                                               detail::time_t_of<State> dt, Observer&& observe) {
     return detail::drive(stepper, f, observe, t0, t1, dt, y);
 }
@@ -143,8 +142,7 @@ template <class Stepper, class System, class State, class Observer,
 /// integrate without an observer.
 template <class Stepper, class System, class State>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate(Stepper&& stepper, System&& f, State& y,
-                                                              detail::time_t_of<State> t0,
-                                                              detail::time_t_of<State> t1,
+                                                              detail::time_t_of<State> t0, detail::time_t_of<State> t1,
                                                               detail::time_t_of<State> dt) {
     detail::no_observer none;
     return detail::drive(stepper, f, none, t0, t1, dt, y);
@@ -154,8 +152,8 @@ template <class Stepper, class System, class State>
 template <class Stepper, class System, class State, class Observer>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(Stepper&& stepper, System&& f, State& y,
                                                                       detail::time_t_of<State> t0,
-                                                                      detail::time_t_of<State> dt,
-                                                                      std::size_t steps, Observer&& observe) {
+                                                                      detail::time_t_of<State> dt, std::size_t steps,
+                                                                      Observer&& observe) {
     return detail::drive_n(stepper, f, observe, t0, dt, steps, y);
 }
 
@@ -163,8 +161,7 @@ template <class Stepper, class System, class State, class Observer>
 template <class Stepper, class System, class State>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(Stepper&& stepper, System&& f, State& y,
                                                                       detail::time_t_of<State> t0,
-                                                                      detail::time_t_of<State> dt,
-                                                                      std::size_t steps) {
+                                                                      detail::time_t_of<State> dt, std::size_t steps) {
     detail::no_observer none;
     return detail::drive_n(stepper, f, none, t0, dt, steps, y);
 }
@@ -174,34 +171,31 @@ template <class Stepper, class System, class State>
 template <class Stepper, class Accel, class State, class Observer,
           std::enable_if_t<detail::is_observer_v<Observer>, int> = 0>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate(Stepper&& stepper, Accel&& a, State& x, State& v,
-                                                              detail::time_t_of<State> t0,
-                                                              detail::time_t_of<State> t1,
+                                                              detail::time_t_of<State> t0, detail::time_t_of<State> t1,
                                                               detail::time_t_of<State> dt, Observer&& observe) {
     return detail::drive(stepper, a, observe, t0, t1, dt, x, v);
 }
 
 template <class Stepper, class Accel, class State>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate(Stepper&& stepper, Accel&& a, State& x, State& v,
-                                                              detail::time_t_of<State> t0,
-                                                              detail::time_t_of<State> t1,
+                                                              detail::time_t_of<State> t0, detail::time_t_of<State> t1,
                                                               detail::time_t_of<State> dt) {
     detail::no_observer none;
     return detail::drive(stepper, a, none, t0, t1, dt, x, v);
 }
 
 template <class Stepper, class Accel, class State, class Observer>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(Stepper&& stepper, Accel&& a, State& x,
-                                                                      State& v, detail::time_t_of<State> t0,
-                                                                      detail::time_t_of<State> dt,
-                                                                      std::size_t steps, Observer&& observe) {
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(Stepper&& stepper, Accel&& a, State& x, State& v,
+                                                                      detail::time_t_of<State> t0,
+                                                                      detail::time_t_of<State> dt, std::size_t steps,
+                                                                      Observer&& observe) {
     return detail::drive_n(stepper, a, observe, t0, dt, steps, x, v);
 }
 
 template <class Stepper, class Accel, class State>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(Stepper&& stepper, Accel&& a, State& x,
-                                                                      State& v, detail::time_t_of<State> t0,
-                                                                      detail::time_t_of<State> dt,
-                                                                      std::size_t steps) {
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(Stepper&& stepper, Accel&& a, State& x, State& v,
+                                                                      detail::time_t_of<State> t0,
+                                                                      detail::time_t_of<State> dt, std::size_t steps) {
     detail::no_observer none;
     return detail::drive_n(stepper, a, none, t0, dt, steps, x, v);
 }

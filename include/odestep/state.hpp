@@ -19,7 +19,7 @@ inline constexpr bool is_scalar_v =
 template <class State>
 inline constexpr bool is_state_v = false;
 template <class T, std::size_t N>
-inline constexpr bool is_state_v<std::array<T, N>> = is_scalar_v<T> && N > 0;
+inline constexpr bool is_state_v<std::array<T, N>> = is_scalar_v<T>&& N > 0;
 
 namespace detail {
 template <class State>

@@ -41,8 +41,8 @@ namespace odestep {
 /// `odestep::check_stepper<S>()` (or using S with a driving loop) names the first trait that is missing.
 template <class State>
 struct stepper_defaults {
-    using state_type = State;                  ///< the state, std::array<T, N>
-    using value_type = value_type_t<State>;    ///< its scalar T
+    using state_type = State;                ///< the state, std::array<T, N>
+    using value_type = value_type_t<State>;  ///< its scalar T
     /// The order of the global error with a smooth system (for `newtonian` steppers: with a force of
     /// position alone). No default: every stepper states it.
     static constexpr int order = 0;
@@ -82,10 +82,10 @@ namespace detail {
 template <class...>
 inline constexpr bool always_false = false;
 
-#define ODESTEP_DETAIL_HAS_MEMBER(name)                                                                    \
-    template <class S, class = void>                                                                      \
-    struct has_##name : std::false_type {};                                                               \
-    template <class S>                                                                                    \
+#define ODESTEP_DETAIL_HAS_MEMBER(name)     \
+    template <class S, class = void>        \
+    struct has_##name : std::false_type {}; \
+    template <class S>                      \
     struct has_##name<S, std::void_t<decltype(S::name)>> : std::true_type {};
 
 ODESTEP_DETAIL_HAS_MEMBER(order)
@@ -113,46 +113,92 @@ struct has_state_type<S, std::void_t<typename S::state_type, typename S::value_t
 // Which requirement a stepper type misses first (0: none). The codes are diagnose()'s.
 template <class S>
 constexpr int first_missing_trait() noexcept {
-    if constexpr (!has_state_type<S>::value) return 1;
-    else if constexpr (!has_order<S>::value) return 2;
-    else if constexpr (!has_stages<S>::value) return 3;
-    else if constexpr (!has_rhs_evals_per_step<S>::value) return 4;
-    else if constexpr (!has_error_estimate<S>::value) return 5;
-    else if constexpr (!has_embedded_order<S>::value) return 6;
-    else if constexpr (!has_rhs_evals_per_error_step<S>::value) return 7;
-    else if constexpr (!has_symplectic<S>::value) return 8;
-    else if constexpr (!has_time_reversible<S>::value) return 9;
-    else if constexpr (!has_self_starting<S>::value) return 10;
-    else if constexpr (!has_uniform_steps<S>::value) return 11;
-    else if constexpr (!has_system<S>::value) return 12;
-    else if constexpr (!has_velocity_forces<S>::value) return 13;
-    else if constexpr (!has_implicit<S>::value) return 14;
-    else if constexpr (!(S::order >= 1)) return 15;
-    else if constexpr (!(S::rhs_evals_per_step >= 1)) return 16;
-    else if constexpr (S::error_estimate && !(S::embedded_order >= 1 && S::rhs_evals_per_error_step >= 1)) return 17;
-    else return 0;
+    if constexpr (!has_state_type<S>::value)
+        return 1;
+    else if constexpr (!has_order<S>::value)
+        return 2;
+    else if constexpr (!has_stages<S>::value)
+        return 3;
+    else if constexpr (!has_rhs_evals_per_step<S>::value)
+        return 4;
+    else if constexpr (!has_error_estimate<S>::value)
+        return 5;
+    else if constexpr (!has_embedded_order<S>::value)
+        return 6;
+    else if constexpr (!has_rhs_evals_per_error_step<S>::value)
+        return 7;
+    else if constexpr (!has_symplectic<S>::value)
+        return 8;
+    else if constexpr (!has_time_reversible<S>::value)
+        return 9;
+    else if constexpr (!has_self_starting<S>::value)
+        return 10;
+    else if constexpr (!has_uniform_steps<S>::value)
+        return 11;
+    else if constexpr (!has_system<S>::value)
+        return 12;
+    else if constexpr (!has_velocity_forces<S>::value)
+        return 13;
+    else if constexpr (!has_implicit<S>::value)
+        return 14;
+    else if constexpr (!(S::order >= 1))
+        return 15;
+    else if constexpr (!(S::rhs_evals_per_step >= 1))
+        return 16;
+    else if constexpr (S::error_estimate && !(S::embedded_order >= 1 && S::rhs_evals_per_error_step >= 1))
+        return 17;
+    else
+        return 0;
 }
 
 template <class S>
 constexpr bool diagnose() noexcept {
     constexpr int code = first_missing_trait<S>();
-    static_assert(code != 1, "odestep: a stepper needs `using state_type = std::array<T, N>;` and `using value_type = T;`");
-    static_assert(code != 2, "odestep: a stepper needs `static constexpr int order` (derive from odestep::stepper_defaults<State>)");
-    static_assert(code != 3, "odestep: a stepper needs `static constexpr std::size_t stages` (derive from odestep::stepper_defaults<State>)");
-    static_assert(code != 4, "odestep: a stepper needs `static constexpr std::size_t rhs_evals_per_step` (derive from odestep::stepper_defaults<State>)");
-    static_assert(code != 5, "odestep: a stepper needs `static constexpr bool error_estimate` (derive from odestep::stepper_defaults<State>)");
-    static_assert(code != 6, "odestep: a stepper needs `static constexpr int embedded_order` (derive from odestep::stepper_defaults<State>)");
-    static_assert(code != 7, "odestep: a stepper needs `static constexpr std::size_t rhs_evals_per_error_step` (derive from odestep::stepper_defaults<State>)");
-    static_assert(code != 8, "odestep: a stepper needs `static constexpr bool symplectic` (derive from odestep::stepper_defaults<State>)");
-    static_assert(code != 9, "odestep: a stepper needs `static constexpr bool time_reversible` (derive from odestep::stepper_defaults<State>)");
-    static_assert(code != 10, "odestep: a stepper needs `static constexpr bool self_starting` (derive from odestep::stepper_defaults<State>)");
-    static_assert(code != 11, "odestep: a stepper needs `static constexpr bool uniform_steps` (derive from odestep::stepper_defaults<State>)");
-    static_assert(code != 12, "odestep: a stepper needs `static constexpr odestep::system_form system` (derive from odestep::stepper_defaults<State>)");
-    static_assert(code != 13, "odestep: a stepper needs `static constexpr bool velocity_forces` (derive from odestep::stepper_defaults<State>)");
-    static_assert(code != 14, "odestep: a stepper needs `static constexpr bool implicit` (derive from odestep::stepper_defaults<State>)");
+    static_assert(code != 1,
+                  "odestep: a stepper needs `using state_type = std::array<T, N>;` and `using value_type = T;`");
+    static_assert(
+        code != 2,
+        "odestep: a stepper needs `static constexpr int order` (derive from odestep::stepper_defaults<State>)");
+    static_assert(code != 3,
+                  "odestep: a stepper needs `static constexpr std::size_t stages` (derive from "
+                  "odestep::stepper_defaults<State>)");
+    static_assert(code != 4,
+                  "odestep: a stepper needs `static constexpr std::size_t rhs_evals_per_step` (derive from "
+                  "odestep::stepper_defaults<State>)");
+    static_assert(code != 5,
+                  "odestep: a stepper needs `static constexpr bool error_estimate` (derive from "
+                  "odestep::stepper_defaults<State>)");
+    static_assert(code != 6,
+                  "odestep: a stepper needs `static constexpr int embedded_order` (derive from "
+                  "odestep::stepper_defaults<State>)");
+    static_assert(code != 7,
+                  "odestep: a stepper needs `static constexpr std::size_t rhs_evals_per_error_step` (derive from "
+                  "odestep::stepper_defaults<State>)");
+    static_assert(
+        code != 8,
+        "odestep: a stepper needs `static constexpr bool symplectic` (derive from odestep::stepper_defaults<State>)");
+    static_assert(code != 9,
+                  "odestep: a stepper needs `static constexpr bool time_reversible` (derive from "
+                  "odestep::stepper_defaults<State>)");
+    static_assert(code != 10,
+                  "odestep: a stepper needs `static constexpr bool self_starting` (derive from "
+                  "odestep::stepper_defaults<State>)");
+    static_assert(code != 11,
+                  "odestep: a stepper needs `static constexpr bool uniform_steps` (derive from "
+                  "odestep::stepper_defaults<State>)");
+    static_assert(code != 12,
+                  "odestep: a stepper needs `static constexpr odestep::system_form system` (derive from "
+                  "odestep::stepper_defaults<State>)");
+    static_assert(code != 13,
+                  "odestep: a stepper needs `static constexpr bool velocity_forces` (derive from "
+                  "odestep::stepper_defaults<State>)");
+    static_assert(
+        code != 14,
+        "odestep: a stepper needs `static constexpr bool implicit` (derive from odestep::stepper_defaults<State>)");
     static_assert(code != 15, "odestep: a stepper's `order` must be at least 1");
     static_assert(code != 16, "odestep: a stepper's `rhs_evals_per_step` must be at least 1");
-    static_assert(code != 17, "odestep: a stepper with `error_estimate` states `embedded_order` and `rhs_evals_per_error_step`");
+    static_assert(code != 17,
+                  "odestep: a stepper with `error_estimate` states `embedded_order` and `rhs_evals_per_error_step`");
     return code == 0;
 }
 
@@ -172,8 +218,7 @@ constexpr bool check_stepper() noexcept {
 /// True when stepper S, given the acceleration Accel, is symplectic: a symplectic method with a force of
 /// position alone (with a(t, x, v) no splitting method is).
 template <class S, class Accel>
-inline constexpr bool is_symplectic_with_v =
-    std::remove_reference_t<S>::symplectic &&
+inline constexpr bool is_symplectic_with_v = std::remove_reference_t<S>::symplectic&&
     is_position_force_v<Accel, typename std::remove_reference_t<S>::state_type>;
 
 namespace detail {

@@ -12,9 +12,9 @@ namespace odestep {
 
 /// The form of system a stepper integrates (its trait `system`).
 enum class system_form : unsigned char {
-    first_order,  ///< y' = f(t, y): `State f(T t, const State& y)` or `void f(T t, const State& y, State& dydt)`
-    newtonian,    ///< x'' = a: `State a(T t, const State& x)`, or `State a(T t, const State& x, const State& v)`
-                  ///< where the stepper accepts it
+    first_order,       ///< y' = f(t, y): `State f(T t, const State& y)` or `void f(T t, const State& y, State& dydt)`
+    newtonian,         ///< x'' = a: `State a(T t, const State& x)`, or `State a(T t, const State& x, const State& v)`
+                       ///< where the stepper accepts it
     charged_particle,  ///< dv/dt = (q/m)(E + v x B): `void fields(T t, const State& x, State& E, State& B)`
 };
 

@@ -10,7 +10,8 @@ int main() {
     auto g = [](double, const state& y) { return y[0] - 0.5; };
     auto action = [](double, state&) { return true; };
     state y{0.0};
-    const auto r = odestep::integrate(odestep::rk4<state>{}, f, y, 0.0, 1.0, 0.1,
-                                      odestep::watch(odestep::make_event<state>(g, odestep::direction::rising, action)));
+    const auto r =
+        odestep::integrate(odestep::rk4<state>{}, f, y, 0.0, 1.0, 0.1,
+                           odestep::watch(odestep::make_event<state>(g, odestep::direction::rising, action)));
     return r.status == odestep::status::ok ? 0 : 1;
 }

@@ -63,9 +63,9 @@ TEST_CASE("events: a terminal ground event stops at the closed-form time with th
     CHECK(r.firings[0] == 1);
     CHECK(r.steps == static_cast<std::size_t>(t_hit / 0.1));  // the grid steps before the impact's step
     CHECK(std::abs(r.t - t_hit) <= 64 * eps * t_hit);
-    CHECK(last_seen == r.t);                                      // the observer saw the stop
-    CHECK(s[0] > 0.0);                                            // the last state before the crossing...
-    CHECK(s[0] < 64 * eps * std::abs(s[1]) * t_hit);              // ... within the time tolerance of it
+    CHECK(last_seen == r.t);                                              // the observer saw the stop
+    CHECK(s[0] > 0.0);                                                    // the last state before the crossing...
+    CHECK(s[0] < 64 * eps * std::abs(s[1]) * t_hit);                      // ... within the time tolerance of it
     CHECK(s[1] == doctest::Approx(v0 - gravity * t_hit).epsilon(1e-13));  // the impact speed, closed form
 }
 
@@ -84,8 +84,8 @@ TEST_CASE("events: a recorded apex leaves the trajectory bit-identical and is lo
     REQUIRE(r.status == odestep::status::ok);
     REQUIRE(plain.status == odestep::status::ok);
     CHECK(r.fired == 1);
-    CHECK(same_bits(with, without));                                  // the action changed nothing
-    CHECK(std::abs(apex_t - v0 / gravity) <= 16 * eps);               // t = v0 / g
+    CHECK(same_bits(with, without));                                               // the action changed nothing
+    CHECK(std::abs(apex_t - v0 / gravity) <= 16 * eps);                            // t = v0 / g
     CHECK(apex_y == doctest::Approx(h + v0 * v0 / (2 * gravity)).epsilon(1e-14));  // h + v0^2 / (2 g)
 }
 
@@ -116,15 +116,16 @@ TEST_CASE("events: g zero at t0 does not fire; a root exactly on a step's end fi
     auto at_half = [](double, const state1& y) { return y[0] - 0.5; };
     auto at_zero = [](double, const state1& y) { return y[0]; };
     double fired_at = -1.0;
-    const auto half = odestep::make_event<state1>(at_half, odestep::direction::either,
-                                                  [&](double t, state1&) { fired_at = t; });
+    const auto half =
+        odestep::make_event<state1>(at_half, odestep::direction::either, [&](double t, state1&) { fired_at = t; });
     const auto zero = odestep::make_event<state1>(at_zero, odestep::direction::either, odestep::record);
     state1 y{0.0};
-    const auto r = odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 2.0, 0.25, odestep::watch(half, zero));
+    const auto r =
+        odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 2.0, 0.25, odestep::watch(half, zero));
     REQUIRE(r.status == odestep::status::ok);
     CHECK(r.firings[0] == 1);
-    CHECK(fired_at == 0.5);     // exactly the grid time 2 * 0.25
-    CHECK(r.firings[1] == 0);   // zero at t0, then only moves away
+    CHECK(fired_at == 0.5);    // exactly the grid time 2 * 0.25
+    CHECK(r.firings[1] == 0);  // zero at t0, then only moves away
     CHECK(y[0] == 2.0);
 }
 
@@ -169,12 +170,13 @@ TEST_CASE("events: a state-resetting action re-triggers every period and the gri
     std::size_t observed = 0;
     bool on_grid = true;
     state1 y{0.0};
-    const auto r = odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 10.5, 0.3,
-                                      odestep::watch(odestep::make_event<state1>(top, odestep::direction::rising, reset)),
-                                      [&](double t, const state1&) {
-                                          on_grid = on_grid && (t == 10.5 || t == static_cast<double>(observed) * 0.3);
-                                          ++observed;
-                                      });
+    const auto r =
+        odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 10.5, 0.3,
+                           odestep::watch(odestep::make_event<state1>(top, odestep::direction::rising, reset)),
+                           [&](double t, const state1&) {
+                               on_grid = on_grid && (t == 10.5 || t == static_cast<double>(observed) * 0.3);
+                               ++observed;
+                           });
     REQUIRE(r.status == odestep::status::ok);
     CHECK(on_grid);
     CHECK(observed == 36);  // t0 and 35 steps: the observer sees the grid only
@@ -191,7 +193,7 @@ TEST_CASE("events: an action that leaves g at its root chatters into event_limit
     auto ev = odestep::make_event<state1>(top, odestep::direction::rising, stay);
     auto r = odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 3.0, 0.3, odestep::watch(ev));
     CHECK(r.status == odestep::status::event_limit);
-    CHECK(r.fired == 8);  // the default limit per step
+    CHECK(r.fired == 8);         // the default limit per step
     CHECK(y[0] == 1.0 - 1e-12);  // the state after the last firing that happened
     CHECK(std::abs(r.t - 1.0) <= 1e-11);
     // With a band of 0.5, it re-arms only once |y - 1| > 0.5 has been seen, which the rising y never shows.
@@ -201,7 +203,8 @@ TEST_CASE("events: an action that leaves g at its root chatters into event_limit
     CHECK(r.fired == 1);
     // A dead time of 0.5 keeps it disarmed until t = 1.5, and by then y is past the level: no second firing.
     y = {0.0};
-    r = odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 3.0, 0.3, odestep::watch(ev.with_dead_time(0.5)));
+    r = odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 3.0, 0.3,
+                           odestep::watch(ev.with_dead_time(0.5)));
     CHECK(r.status == odestep::status::ok);
     CHECK(r.fired == 1);
 }
@@ -231,11 +234,11 @@ TEST_CASE("events: the earliest event in a step wins; simultaneous ones fire in 
     };
     state1 y{0.0};
     // In one step [0, 1]: levels 0.75 (event 0), 0.25 (event 1) and 0.25 again (event 2).
-    const auto r = odestep::integrate(
-        odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 1.0, 1.0,
-        odestep::watch(odestep::make_event<state1>(at(0.75), odestep::direction::rising, note(0)),
-                       odestep::make_event<state1>(at(0.25), odestep::direction::rising, note(1)),
-                       odestep::make_event<state1>(at(0.25), odestep::direction::rising, note(2))));
+    const auto r =
+        odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 1.0, 1.0,
+                           odestep::watch(odestep::make_event<state1>(at(0.75), odestep::direction::rising, note(0)),
+                                          odestep::make_event<state1>(at(0.25), odestep::direction::rising, note(1)),
+                                          odestep::make_event<state1>(at(0.25), odestep::direction::rising, note(2))));
     REQUIRE(r.status == odestep::status::ok);
     REQUIRE(n == 3);
     CHECK(order[0] == 1);
@@ -270,7 +273,8 @@ TEST_CASE("events: negative or NaN tolerance, band and dead time are rejected be
         CHECK(odestep::integrate(odestep::rk4<state1>{}, clock_rhs{&calls}, y, 0.0, 1.0, 0.25,
                                  odestep::watch(ev.with_tolerance(v)))
                   .status == odestep::status::invalid_tolerance);
-        CHECK(odestep::integrate(odestep::rk4<state1>{}, clock_rhs{&calls}, y, 0.0, 1.0, 0.25, odestep::watch(ev.with_band(v)))
+        CHECK(odestep::integrate(odestep::rk4<state1>{}, clock_rhs{&calls}, y, 0.0, 1.0, 0.25,
+                                 odestep::watch(ev.with_band(v)))
                   .status == odestep::status::invalid_tolerance);
         CHECK(odestep::integrate(odestep::rk4<state1>{}, clock_rhs{&calls}, y, 0.0, 1.0, 0.25,
                                  odestep::watch(ev.with_dead_time(v)))
@@ -323,7 +327,8 @@ TEST_CASE("events: float events are located to a few float ULPs without touching
     // The closed form, evaluated in double by the test: (v0 + sqrt(v0^2 + 2 g h)) / g, with g as the float 9.8f.
     const double g = static_cast<double>(9.8f);
     const double t_hit = (5.0 + std::sqrt(25.0 + 2.0 * g * 10.0)) / g;
-    CHECK(std::abs(static_cast<double>(r.t) - t_hit) <= 64.0 * static_cast<double>(std::numeric_limits<float>::epsilon()) * t_hit);
+    CHECK(std::abs(static_cast<double>(r.t) - t_hit) <=
+          64.0 * static_cast<double>(std::numeric_limits<float>::epsilon()) * t_hit);
 }
 
 TEST_CASE("events: a bouncing ball (e = 0.7) meets the closed-form impact times, and its Zeno storm is reported") {
@@ -391,8 +396,9 @@ TEST_CASE("events: Newton's form with velocity Verlet, g(t, x, v) and action(t, 
         vel[0] = -vel[0];
     };
     // Velocity Verlet is exact for constant acceleration too.
-    const auto r = odestep::integrate(odestep::velocity_verlet<vec>{}, a, x, v, 0.0, 3.0, 0.1,
-                                      odestep::watch(odestep::make_event<vec>(ground, odestep::direction::falling, bounce)));
+    const auto r =
+        odestep::integrate(odestep::velocity_verlet<vec>{}, a, x, v, 0.0, 3.0, 0.1,
+                           odestep::watch(odestep::make_event<vec>(ground, odestep::direction::falling, bounce)));
     REQUIRE(r.status == odestep::status::ok);
     CHECK(bounces == 1);
     // elastic: after the bounce at t_hit the ball retraces its fall: x(2) = x(2 t_hit - 2) mirrored in time
@@ -414,8 +420,9 @@ TEST_CASE("events: Adams-Bashforth-Moulton restarts its history after a state ch
         t_cream = t;
         cream(t, y);
     };
-    const auto res = odestep::integrate(odestep::adams_bashforth_moulton4<state1>{}, cool, T, 0.0, 20.0, 0.1,
-                                        odestep::watch(odestep::make_event<state1>(at67, odestep::direction::falling, note)));
+    const auto res =
+        odestep::integrate(odestep::adams_bashforth_moulton4<state1>{}, cool, T, 0.0, 20.0, 0.1,
+                           odestep::watch(odestep::make_event<state1>(at67, odestep::direction::falling, note)));
     REQUIRE(res.status == odestep::status::ok);
     // T reaches 67 at ln((85 - 17) / (67 - 17)) / r; after it, T = Ts + (62 - Ts) e^{-r (t - t_cream)}.
     CHECK(t_cream == doctest::Approx(std::log(68.0 / 50.0) / r).epsilon(1e-9));
@@ -534,8 +541,9 @@ TEST_CASE("events: g values whose products underflow or overflow still give the 
     // one crossing at t = 5 (y' = 1 from 0) and no NaN.
     for (const double scale : {1e-200, 1e200}) {
         auto g = [scale](double, const state1& y) { return scale * (y[0] - 5.0); };
-        auto loop = odestep::make_event_stepper(odestep::rk4<state1>{},
-                                                odestep::watch(odestep::make_event<state1>(g, odestep::direction::rising, odestep::record)));
+        auto loop = odestep::make_event_stepper(
+            odestep::rk4<state1>{},
+            odestep::watch(odestep::make_event<state1>(g, odestep::direction::rising, odestep::record)));
         state1 y{0.0};
         REQUIRE(loop.start(0.0, 0.25, y) == odestep::status::ok);
         std::size_t fired = 0;
@@ -601,7 +609,7 @@ TEST_CASE("events: the published bound on right-hand-side evaluations per step h
         if (calls > worst) worst = calls;
         CHECK(calls <= bound);
     }
-    CHECK(limited >= 1);         // the firing limit was reached: the worst case was driven
+    CHECK(limited >= 1);            // the firing limit was reached: the worst case was driven
     CHECK(worst * 10 > bound * 8);  // and the bound is tight to within 20% (measured: 4556 of 4936)
 }
 
@@ -610,7 +618,8 @@ TEST_CASE("events: the default root finder locates smooth events in at most 10 r
     std::size_t calls = 0;
     state2 s{10.0, 5.0};
     const auto ground = odestep::make_event<state2>(height, odestep::direction::falling);
-    const auto r = odestep::integrate(odestep::rk4<state2>{}, free_fall{&calls}, s, 0.0, 10.0, 0.1, odestep::watch(ground));
+    const auto r =
+        odestep::integrate(odestep::rk4<state2>{}, free_fall{&calls}, s, 0.0, 10.0, 0.1, odestep::watch(ground));
     REQUIRE(r.status == odestep::status::stopped_by_event);
     const std::size_t location = calls - 4 * (r.steps + 1);  // beyond the steps themselves
     CHECK(location % 4 == 0);
@@ -626,9 +635,10 @@ TEST_CASE("events: an action that moves the state onto or across another event's
     for (double set_to : {62.0, 57.0}) {
         auto pour = [set_to](double, state1& T) { T[0] = set_to; };
         state1 T{85.0};
-        const auto r = odestep::integrate(odestep::rk4<state1>{}, cool, T, 0.0, 60.0, 0.1,
-                                          odestep::watch(odestep::make_event<state1>(at67, odestep::direction::falling, pour),
-                                                         odestep::make_event<state1>(at62, odestep::direction::falling)));
+        const auto r =
+            odestep::integrate(odestep::rk4<state1>{}, cool, T, 0.0, 60.0, 0.1,
+                               odestep::watch(odestep::make_event<state1>(at67, odestep::direction::falling, pour),
+                                              odestep::make_event<state1>(at62, odestep::direction::falling)));
         CHECK(r.status == odestep::status::stopped_by_event);
         CHECK(r.event == 1);
         CHECK(r.firings[0] == 1);
@@ -642,7 +652,9 @@ TEST_CASE("events: a NaN from the right-hand side, in a step or in a re-step, is
     auto g = [](double, const state1& y) { return y[0] - 0.6; };
     const auto ev = odestep::make_event<state1>(g, odestep::direction::rising);
     // In the step itself: f is NaN beyond y = 0.55, so the step from 0.5 to 0.75 fails and is rolled back.
-    auto nan_above = [](double, const state1& y) { return state1{y[0] > 0.55 ? std::numeric_limits<double>::quiet_NaN() : 1.0}; };
+    auto nan_above = [](double, const state1& y) {
+        return state1{y[0] > 0.55 ? std::numeric_limits<double>::quiet_NaN() : 1.0};
+    };
     state1 y{0.0};
     auto r = odestep::integrate(odestep::rk4<state1>{}, nan_above, y, 0.0, 1.0, 0.25, odestep::watch(ev));
     CHECK(r.status == odestep::status::non_finite);

@@ -130,11 +130,16 @@ T error_after(T t_end, std::size_t steps) {
 //                                                  1.4e-12, within 1% of the long double error)
 template <class M>
 constexpr std::size_t coarsest_steps() {
-    if constexpr (std::is_same_v<M, tables::bashforth2>) return 128;
-    else if constexpr (std::is_same_v<M, tables::bashforth3>) return 256;
-    else if constexpr (std::is_same_v<M, tables::bashforth4>) return 512;
-    else if constexpr (std::is_same_v<M, tables::bashforth5>) return 256;
-    else return 2048;
+    if constexpr (std::is_same_v<M, tables::bashforth2>)
+        return 128;
+    else if constexpr (std::is_same_v<M, tables::bashforth3>)
+        return 256;
+    else if constexpr (std::is_same_v<M, tables::bashforth4>)
+        return 512;
+    else if constexpr (std::is_same_v<M, tables::bashforth5>)
+        return 256;
+    else
+        return 2048;
 }
 
 // Least-squares slope of log(error) against log(h) over h, h/2, h/4, h/8.
@@ -174,10 +179,14 @@ std::array<state, Steps> clean_run(double dt) {
 static_assert(std::is_same_v<odestep::adams_bashforth4<std::array<float, 2>>::value_type, float>);
 static_assert(odestep::adams_bashforth5<std::array<float, 2>>::steps == 5);
 static_assert(odestep::adams_bashforth2<std::array<double, 1>>::rhs_evals_per_step == 4);  // rk4's, starting
-static_assert(odestep::adams_bashforth2<std::array<double, 1>, odestep::euler<std::array<double, 1>>>::rhs_evals_per_step == 1);
-static_assert(odestep::adams_bashforth_moulton4<std::array<double, 1>, odestep::heun<std::array<double, 1>>>::rhs_evals_per_step == 2);
+static_assert(
+    odestep::adams_bashforth2<std::array<double, 1>, odestep::euler<std::array<double, 1>>>::rhs_evals_per_step == 1);
+static_assert(odestep::adams_bashforth_moulton4<std::array<double, 1>,
+                                                odestep::heun<std::array<double, 1>>>::rhs_evals_per_step == 2);
 
-TEST_CASE("adams: the traits say k steps, one stage, no estimate, self-starting, and the starter's evaluations as the most per step") {
+TEST_CASE(
+    "adams: the traits say k steps, one stage, no estimate, self-starting, and the starter's evaluations as the most "
+    "per step") {
     struct expected {
         int order;
         std::size_t steps, evals_started;
@@ -218,7 +227,8 @@ TEST_CASE("adams: each table satisfies its order conditions to long double round
         CHECK(tab.order == static_cast<int>(K));
         if constexpr (decltype(tab)::has_corrector) {
             order_residuals(tab.gamma, 1.0L, worst, next);  // Adams-Moulton nodes s_j = 1 - j
-            INFO("corrector: worst relative residual ", static_cast<double>(worst), ", next ", static_cast<double>(next));
+            INFO("corrector: worst relative residual ", static_cast<double>(worst), ", next ",
+                 static_cast<double>(next));
             CHECK(worst <= 4 * std::numeric_limits<long double>::epsilon());
             CHECK(std::fabs(next) > 1e-3L);
         }
@@ -270,16 +280,19 @@ TEST_CASE("adams: every method works in float and long double: the error is the 
         const double err_float = static_cast<double>(error_after<M, float>(20.0f, n));
         const double err_long = static_cast<double>(error_after<M, long double>(20.0L, n));
         // Round-off: a few ULPs of the solution (|y| <= e) per step, growing at most like the step count.
-        const double float_roundoff = 8.0 * static_cast<double>(n) * static_cast<double>(std::numeric_limits<float>::epsilon());
+        const double float_roundoff =
+            8.0 * static_cast<double>(n) * static_cast<double>(std::numeric_limits<float>::epsilon());
         const double double_roundoff = 8.0 * static_cast<double>(n) * std::numeric_limits<double>::epsilon();
-        INFO(doctest::String(M::name), ": float error ", err_float, ", double error ", err_double, ", long double error ",
-             err_long, ", float allowance ", float_roundoff);
+        INFO(doctest::String(M::name), ": float error ", err_float, ", double error ", err_double,
+             ", long double error ", err_long, ", float allowance ", float_roundoff);
         CHECK(std::fabs(err_float - err_double) <= float_roundoff);
         CHECK(std::fabs(err_long - err_double) <= double_roundoff);
     });
 }
 
-TEST_CASE("adams: with the history empty, the first k-1 steps are bit-identical to the starter's, then the formula takes over") {
+TEST_CASE(
+    "adams: with the history empty, the first k-1 steps are bit-identical to the starter's, then the formula takes "
+    "over") {
     for_each_adams([](auto method) {
         using M = decltype(method);
         auto compare = [](auto multistep, auto starter) {
@@ -319,7 +332,8 @@ TEST_CASE("adams: a step makes exactly one evaluation (AB) or two (PECE) once st
         INFO(doctest::String(M::name));
         for (std::size_t i = 0; i < 20; ++i) {
             std::size_t calls = 0;
-            REQUIRE(stepper.step(counting_exp_sin{&calls}, y, 0.05 * static_cast<double>(i), 0.05) == odestep::status::ok);
+            REQUIRE(stepper.step(counting_exp_sin{&calls}, y, 0.05 * static_cast<double>(i), 0.05) ==
+                    odestep::status::ok);
             const std::size_t expected = i + 1 < stepper_t::steps ? 4 : stepper_t::rhs_evals_per_started_step;
             CHECK(calls == expected);
             CHECK(calls <= stepper_t::rhs_evals_per_step);
@@ -355,13 +369,19 @@ TEST_CASE("adams: a different dt or a wrong t returns step_mismatch, evaluates n
             const double t = static_cast<double>(i) * dt;
             if (i > 0) {  // the first step accepts anything; every later one, during the start or after, is checked
                 const state before = y;
-                const double bad_dt[] = {2 * dt, dt / 2, -dt, std::nextafter(dt, 1.0), std::nextafter(dt, 0.0),
+                const double bad_dt[] = {2 * dt,
+                                         dt / 2,
+                                         -dt,
+                                         std::nextafter(dt, 1.0),
+                                         std::nextafter(dt, 0.0),
                                          std::numeric_limits<double>::quiet_NaN()};
                 const double bad_t[] = {t + dt, t - dt, t + 1e-9, std::numeric_limits<double>::quiet_NaN(),
                                         std::numeric_limits<double>::infinity()};
                 std::size_t calls = 0;
-                for (double d : bad_dt) CHECK(stepper.step(counting_exp_sin{&calls}, y, t, d) == odestep::status::step_mismatch);
-                for (double s : bad_t) CHECK(stepper.step(counting_exp_sin{&calls}, y, s, dt) == odestep::status::step_mismatch);
+                for (double d : bad_dt)
+                    CHECK(stepper.step(counting_exp_sin{&calls}, y, t, d) == odestep::status::step_mismatch);
+                for (double s : bad_t)
+                    CHECK(stepper.step(counting_exp_sin{&calls}, y, s, dt) == odestep::status::step_mismatch);
                 CHECK(stepper.step(counting_exp_sin{&calls}, y, t + dt, 2 * dt) == odestep::status::step_mismatch);
                 CHECK(calls == 0);
                 CHECK(same_bits(y, before));
@@ -427,14 +447,16 @@ TEST_CASE("adams: counter times t0 + i dt are accepted across zero and over 10^6
     for (const float t0 : {0.0f, -500.0f}) {
         odestep::adams_bashforth2<F> ab2;
         F x{1.0f};
-        const auto rf = odestep::integrate_n_steps(ab2, [](float, const F&) { return F{1.0f}; }, x, t0, 1e-3f, 1000000);
+        const auto rf = odestep::integrate_n_steps(
+            ab2, [](float, const F&) { return F{1.0f}; }, x, t0, 1e-3f, 1000000);
         INFO("float from ", t0);
         CHECK(rf.status == odestep::status::ok);
         CHECK(rf.steps == 1000000);
     }
 }
 
-TEST_CASE("adams: the first step after construction or reset accepts any t and dt, and reset restarts with the starter") {
+TEST_CASE(
+    "adams: the first step after construction or reset accepts any t and dt, and reset restarts with the starter") {
     for_each_adams([](auto method) {
         using M = decltype(method);
         using stepper_t = odestep::adams<M, state>;
@@ -467,7 +489,9 @@ TEST_CASE("adams: the first step after construction or reset accepts any t and d
     });
 }
 
-TEST_CASE("adams: a NaN or Inf from any evaluation rolls the step back, y and history, and a retry continues bit-identically") {
+TEST_CASE(
+    "adams: a NaN or Inf from any evaluation rolls the step back, y and history, and a retry continues "
+    "bit-identically") {
     for_each_adams([](auto method) {
         using M = decltype(method);
         using stepper_t = odestep::adams<M, state>;
@@ -477,7 +501,8 @@ TEST_CASE("adams: a NaN or Inf from any evaluation rolls the step back, y and hi
         const double dt = 0.1;
         const auto reference = clean_run<stepper_t, steps>(dt);
         // Every evaluation of the run: during the start (each rk4 stage) and after it (each E of PECE).
-        const std::size_t total = 4 * (stepper_t::steps - 1) + stepper_t::rhs_evals_per_started_step * (steps - stepper_t::steps + 1);
+        const std::size_t total =
+            4 * (stepper_t::steps - 1) + stepper_t::rhs_evals_per_started_step * (steps - stepper_t::steps + 1);
         for (const double poison : {qnan, inf, -inf}) {
             for (std::size_t poisoned = 1; poisoned <= total; ++poisoned) {
                 INFO(doctest::String(M::name), ", evaluation ", poisoned, " returns ", poison);
@@ -521,7 +546,9 @@ TEST_CASE("adams: a new state that overflows to Inf, from finite derivatives, is
     CHECK(stepper.history_size() == 1);
 }
 
-TEST_CASE("adams: integrate over a whole number of steps works and equals integrate_n_steps; a shortened last step is a step_mismatch") {
+TEST_CASE(
+    "adams: integrate over a whole number of steps works and equals integrate_n_steps; a shortened last step is a "
+    "step_mismatch") {
     for_each_adams([](auto method) {
         using M = decltype(method);
         using stepper_t = odestep::adams<M, state>;

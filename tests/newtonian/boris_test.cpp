@@ -267,7 +267,9 @@ TEST_CASE("boris: the gyro-phase advances by exactly 2 atan(omega_c dt / 2) per 
     }
 }
 
-TEST_CASE("boris: the orbit in a uniform B is a circle of radius |v_perp| (1 + (omega_c dt/2)^2) / omega_c, second order in dt") {
+TEST_CASE(
+    "boris: the orbit in a uniform B is a circle of radius |v_perp| (1 + (omega_c dt/2)^2) / omega_c, second order in "
+    "dt") {
     // With v_{n+1/2} turning by theta = 2 atan(omega_c dt/2) at constant speed |v_{1/2}| = |v_perp| sqrt(1 +
     // (omega_c dt/2)^2) (staggered from v_0), the points x_n are the vertices of chords of length dt |v_{1/2}|
     // subtending theta: radius dt |v_{1/2}| / (2 sin(theta/2)) = |v_perp| (1 + (omega_c dt/2)^2) / omega_c.
@@ -336,7 +338,8 @@ TEST_CASE("boris: in crossed fields the guiding centre drifts at E x B / B^2 = (
         REQUIRE(pusher.synchronize(fields, x, v, r.t, dt) == odestep::status::ok);
         CHECK(max_diff(v, v3{0, 0, 0.2}) <= 1e-12);  // back at rest (across B) after whole periods
     }
-    SUBCASE("with any dt, the average velocity over many gyro-periods is E/B within the orbit's diameter over the time") {
+    SUBCASE(
+        "with any dt, the average velocity over many gyro-periods is E/B within the orbit's diameter over the time") {
         const double dt = 0.1;
         const v3 v0{-1.0, 0.7, 0.0};
         v3 x{0, 0, 0}, v = v0;
@@ -376,7 +379,9 @@ TEST_CASE("boris: observed order 2 on the exact crossed-field motion (step halvi
 // ---------------------------------------------------------------------------------------------------------
 // Which time v belongs to
 
-TEST_CASE("boris: v lags x by half a step; in a uniform E the staggered leapfrog is exact, and the observer sees v(t - dt/2)") {
+TEST_CASE(
+    "boris: v lags x by half a step; in a uniform E the staggered leapfrog is exact, and the observer sees v(t - "
+    "dt/2)") {
     // B = 0 and E uniform: x'' = a = (q/m) E. The leapfrog's velocity kick a dt then drift v_{n+1/2} dt is
     // exact for a constant force, provided v starts at t0 - dt/2. All numbers below are dyadic, so every
     // operation is exact and the comparisons are ==.
@@ -452,7 +457,8 @@ TEST_CASE("boris: stagger and synchronize are each other's inverse, for both pus
     }
 }
 
-TEST_CASE("boris: time reversible: stagger, N steps and synchronize forward, then the same with -dt, return to the start") {
+TEST_CASE(
+    "boris: time reversible: stagger, N steps and synchronize forward, then the same with -dt, return to the start") {
     // The map on synchronized (x_n, v_n) is a half kick, a drift and the inverse half kick: symmetric, so
     // the run with -dt from (x_N, v_N) retraces it. Round-off only: 1000 steps, each about 1e-16.
     const nonuniform fields;
@@ -478,7 +484,9 @@ TEST_CASE("boris: time reversible: stagger, N steps and synchronize forward, the
     there_and_back(odestep::boris_relativistic<v3>(1.3, 2.0), 1e-12);
 }
 
-TEST_CASE("boris: volume preserving: the step's Jacobian determinant in (x, v) is 1 in a non-uniform field, where RK4's is not") {
+TEST_CASE(
+    "boris: volume preserving: the step's Jacobian determinant in (x, v) is 1 in a non-uniform field, where RK4's is "
+    "not") {
     // Each stage of the step has determinant 1 (Qin et al. 2013): the E kicks and the drift are shears, and
     // the rotation, at fixed x, is orthogonal; for the relativistic pusher the rotation angle depends on |u|
     // only, which it keeps, so it too preserves volume (Higuera & Cary 2017). Central differences in long
@@ -563,7 +571,9 @@ TEST_CASE("boris: integrate is bitwise the same as calling step by hand at t0 + 
 // ---------------------------------------------------------------------------------------------------------
 // Relativistic
 
-TEST_CASE("boris_relativistic: in a pure B, |u| (so gamma) is conserved to round-off and the gyration frequency is omega_c / gamma") {
+TEST_CASE(
+    "boris_relativistic: in a pure B, |u| (so gamma) is conserved to round-off and the gyration frequency is omega_c / "
+    "gamma") {
     // c = 2 and |u| = 2.6: gamma = sqrt(1 + 2.6^2 / 4) = 1.64 (v = 0.79 c). The rotation angle per step is
     // 2 atan(omega_c dt / (2 gamma)) exactly (tau = (q/m) B dt / (2 gamma)), omega_c dt / gamma to O(dt^3).
     const double qm = 1.0, b = 3.0, c = 2.0, dt = 0.02;
@@ -752,7 +762,8 @@ void check_rollback(const Pusher& pusher, T bad) {
 }
 }  // namespace
 
-TEST_CASE("boris: a NaN or Inf in any field component leaves x and v exactly as they were, both pushers, float and double") {
+TEST_CASE(
+    "boris: a NaN or Inf in any field component leaves x and v exactly as they were, both pushers, float and double") {
     for (double bad : {qnan, inf, -inf}) {
         check_rollback(odestep::boris<v3>(1.5), bad);
         check_rollback(odestep::boris_relativistic<v3>(1.5, 3.0), bad);

@@ -51,11 +51,10 @@ T circular_orbit_error(T t_end, std::size_t steps) {
     return std::fmax(e, std::fmax(std::fabs(v[0] + std::sin(t_end)), std::fabs(v[1] - std::cos(t_end))));
 }
 
-using newtonian_methods =
-    std::tuple<odestep::newtonian_euler<vec2<double>>, odestep::newtonian_midpoint<vec2<double>>,
-               odestep::newtonian_euler_richardson<vec2<double>>, odestep::half_step<vec2<double>>,
-               odestep::leapfrog_position_form<vec2<double>>, odestep::beeman<vec2<double>>,
-               odestep::predictor_corrector<vec2<double>>>;
+using newtonian_methods = std::tuple<odestep::newtonian_euler<vec2<double>>, odestep::newtonian_midpoint<vec2<double>>,
+                                     odestep::newtonian_euler_richardson<vec2<double>>,
+                                     odestep::half_step<vec2<double>>, odestep::leapfrog_position_form<vec2<double>>,
+                                     odestep::beeman<vec2<double>>, odestep::predictor_corrector<vec2<double>>>;
 
 template <class F, class... M>
 void for_each_in(F&& f, std::tuple<M...>*) {
@@ -68,13 +67,20 @@ void for_each_newtonian(F&& f) {
 
 template <class Stepper>
 const char* name_of() {
-    if constexpr (std::is_same_v<Stepper, odestep::newtonian_euler<vec2<double>>>) return "newtonian_euler";
-    else if constexpr (std::is_same_v<Stepper, odestep::newtonian_midpoint<vec2<double>>>) return "newtonian_midpoint";
-    else if constexpr (std::is_same_v<Stepper, odestep::newtonian_euler_richardson<vec2<double>>>) return "newtonian_euler_richardson";
-    else if constexpr (std::is_same_v<Stepper, odestep::half_step<vec2<double>>>) return "half_step";
-    else if constexpr (std::is_same_v<Stepper, odestep::leapfrog_position_form<vec2<double>>>) return "leapfrog_position_form";
-    else if constexpr (std::is_same_v<Stepper, odestep::beeman<vec2<double>>>) return "beeman";
-    else return "predictor_corrector";
+    if constexpr (std::is_same_v<Stepper, odestep::newtonian_euler<vec2<double>>>)
+        return "newtonian_euler";
+    else if constexpr (std::is_same_v<Stepper, odestep::newtonian_midpoint<vec2<double>>>)
+        return "newtonian_midpoint";
+    else if constexpr (std::is_same_v<Stepper, odestep::newtonian_euler_richardson<vec2<double>>>)
+        return "newtonian_euler_richardson";
+    else if constexpr (std::is_same_v<Stepper, odestep::half_step<vec2<double>>>)
+        return "half_step";
+    else if constexpr (std::is_same_v<Stepper, odestep::leapfrog_position_form<vec2<double>>>)
+        return "leapfrog_position_form";
+    else if constexpr (std::is_same_v<Stepper, odestep::beeman<vec2<double>>>)
+        return "beeman";
+    else
+        return "predictor_corrector";
 }
 
 template <class Stepper>
@@ -117,7 +123,8 @@ TEST_CASE("newtonian: every method works in float, to its double accuracy plus f
         const double err_double = circular_orbit_error<S, double>(5.0, n);
         const double err_float = static_cast<double>(circular_orbit_error<Sf, float>(5.0f, n));
         INFO(doctest::String(name_of<S>()), ": float ", err_float, ", double ", err_double);
-        CHECK(std::fabs(err_float - err_double) <= 8.0 * n * static_cast<double>(std::numeric_limits<float>::epsilon()));
+        CHECK(std::fabs(err_float - err_double) <=
+              8.0 * n * static_cast<double>(std::numeric_limits<float>::epsilon()));
     });
 }
 
@@ -128,7 +135,8 @@ TEST_CASE("newtonian_euler: on the oscillator the energy grows by exactly (1 + d
     vec2<double> v{0.0, 0.5};
     const double e0 = x[0] * x[0] + x[1] * x[1] + v[0] * v[0] + v[1] * v[1];
     const double dt = 0.01;
-    const auto r = odestep::integrate_n_steps(odestep::newtonian_euler<vec2<double>>{}, counting_oscillator{&calls}, x, v, 0.0, dt, 1000);
+    const auto r = odestep::integrate_n_steps(odestep::newtonian_euler<vec2<double>>{}, counting_oscillator{&calls}, x,
+                                              v, 0.0, dt, 1000);
     REQUIRE(r.status == odestep::status::ok);
     const double e = x[0] * x[0] + x[1] * x[1] + v[0] * v[0] + v[1] * v[1];
     CHECK(e / e0 == doctest::Approx(std::pow(1 + dt * dt, 1000)).epsilon(1e-12));
@@ -146,7 +154,8 @@ TEST_CASE("newtonian_euler_richardson: the error estimate is the difference to t
     vec2<double> ex{};
     vec2<double> ev{};
     std::size_t calls = 0;
-    REQUIRE(odestep::newtonian_euler_richardson<vec2<double>>{}.step(counting_oscillator{&calls}, x, v, 0.0, dt, ex, ev) == odestep::status::ok);
+    REQUIRE(odestep::newtonian_euler_richardson<vec2<double>>{}.step(counting_oscillator{&calls}, x, v, 0.0, dt, ex,
+                                                                     ev) == odestep::status::ok);
     CHECK(calls == 2);
     for (std::size_t i = 0; i < 2; ++i) {
         const double a0 = -x0[i];
@@ -165,7 +174,8 @@ TEST_CASE("newtonian: history-keeping methods make one evaluation per step once 
         std::size_t calls = 0;
         vec2<double> x{1.0, 0.0};
         vec2<double> v{0.0, 1.0};
-        REQUIRE(odestep::integrate_n_steps(stepper, counting_oscillator{&calls}, x, v, 0.0, 0.01, 100).status == odestep::status::ok);
+        REQUIRE(odestep::integrate_n_steps(stepper, counting_oscillator{&calls}, x, v, 0.0, 0.01, 100).status ==
+                odestep::status::ok);
         CHECK(calls == 101);  // two on the first step, one on each of the other 99
         calls = 0;
         REQUIRE(stepper.step(counting_oscillator{&calls}, x, v, 1.0, 0.01) == odestep::status::ok);
@@ -199,7 +209,8 @@ TEST_CASE("newtonian: far from t = 0 the counter's times still continue the hist
     odestep::half_step<vec2<double>> stepper;
     vec2<double> x{1.0, 0.0};
     vec2<double> v{0.0, 1.0};
-    REQUIRE(odestep::integrate_n_steps(stepper, counting_oscillator{&calls}, x, v, -1000.0, 0.1, 20000).status == odestep::status::ok);
+    REQUIRE(odestep::integrate_n_steps(stepper, counting_oscillator{&calls}, x, v, -1000.0, 0.1, 20000).status ==
+            odestep::status::ok);
     CHECK(calls == 20001);
     calls = 0;
     (void)stepper.step(counting_oscillator{&calls}, x, v, std::numeric_limits<double>::infinity(), 0.1);
@@ -219,11 +230,14 @@ TEST_CASE("newtonian: the reversible methods return to their start after N steps
         vec2<double> v{0.0, 0.5};
         const vec2<double> x0 = x;
         const vec2<double> v0 = v;
-        REQUIRE(odestep::integrate(stepper, counting_oscillator{&calls}, x, v, 0.0, 10.0, 0.01).status == odestep::status::ok);
-        REQUIRE(odestep::integrate(stepper, counting_oscillator{&calls}, x, v, 10.0, 0.0, -0.01).status == odestep::status::ok);
+        REQUIRE(odestep::integrate(stepper, counting_oscillator{&calls}, x, v, 0.0, 10.0, 0.01).status ==
+                odestep::status::ok);
+        REQUIRE(odestep::integrate(stepper, counting_oscillator{&calls}, x, v, 10.0, 0.0, -0.01).status ==
+                odestep::status::ok);
         const double ulp = std::numeric_limits<double>::epsilon();
         for (std::size_t i = 0; i < 2; ++i) {
-            MESSAGE(doctest::String(name), ": return error x ", std::fabs(x[i] - x0[i]) / ulp, " ULPs, v ", std::fabs(v[i] - v0[i]) / ulp, " ULPs");
+            MESSAGE(doctest::String(name), ": return error x ", std::fabs(x[i] - x0[i]) / ulp, " ULPs, v ",
+                    std::fabs(v[i] - v0[i]) / ulp, " ULPs");
             CHECK(std::fabs(x[i] - x0[i]) <= ulps * ulp);
             CHECK(std::fabs(v[i] - v0[i]) <= ulps * ulp);
         }
@@ -250,7 +264,8 @@ TEST_CASE("predictor_corrector: iterates to its tolerance, and past its cap says
 }
 
 TEST_CASE("predictor_corrector: a zero, negative or NaN tolerance is invalid_tolerance, nothing touched") {
-    for (const double tol : {0.0, -1e-12, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    for (const double tol :
+         {0.0, -1e-12, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
         odestep::predictor_corrector<vec2<double>> pc;
         pc.tolerance = tol;
         vec2<double> x{1.0, 0.0};
@@ -314,11 +329,14 @@ TEST_CASE("newtonian: a velocity-dependent force works with the methods that acc
     const double exact = std::exp(-g * t_end) * (std::cos(w * t_end) + g / w * std::sin(w * t_end));
     std::array<double, 1> x{1.0};
     std::array<double, 1> v{0.0};
-    REQUIRE(odestep::integrate(odestep::newtonian_euler_richardson<std::array<double, 1>>{}, damped, x, v, 0.0, t_end, 0.001).status == odestep::status::ok);
+    REQUIRE(odestep::integrate(odestep::newtonian_euler_richardson<std::array<double, 1>>{}, damped, x, v, 0.0, t_end,
+                               0.001)
+                .status == odestep::status::ok);
     CHECK(x[0] == doctest::Approx(exact).epsilon(1e-6));
     x = {1.0};
     v = {0.0};
-    REQUIRE(odestep::integrate(odestep::predictor_corrector<std::array<double, 1>>{}, damped, x, v, 0.0, t_end, 0.001).status == odestep::status::ok);
+    REQUIRE(odestep::integrate(odestep::predictor_corrector<std::array<double, 1>>{}, damped, x, v, 0.0, t_end, 0.001)
+                .status == odestep::status::ok);
     CHECK(x[0] == doctest::Approx(exact).epsilon(1e-6));
 }
 
@@ -387,7 +405,8 @@ TEST_CASE("beeman, caller's history: bit for bit the stepper-kept form's steps, 
     CHECK(std::fabs(y[1] - std::sin(3.0)) < 1e-4);
 }
 
-TEST_CASE("beeman, caller's history: a NaN from any evaluation, or an overflow, leaves x, v and hist exactly as they were") {
+TEST_CASE(
+    "beeman, caller's history: a NaN from any evaluation, or an overflow, leaves x, v and hist exactly as they were") {
     const double qnan = std::numeric_limits<double>::quiet_NaN();
     const odestep::beeman<vec2<double>> stepper;
     // Poison the k-th evaluation over three steps: 1 and 2 hit the self-starting step, 3 and 4 the later

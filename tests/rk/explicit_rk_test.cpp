@@ -41,21 +41,36 @@ struct expected_traits {
 template <class M>
 constexpr expected_traits published() {
     using namespace odestep::tableaux;
-    if constexpr (std::is_same_v<M, euler>) return {1, 1, 1, 0, 0};
-    else if constexpr (std::is_same_v<M, midpoint>) return {2, 2, 2, 2, 1};
-    else if constexpr (std::is_same_v<M, heun>) return {2, 2, 2, 0, 0};
-    else if constexpr (std::is_same_v<M, ralston2>) return {2, 2, 2, 0, 0};
-    else if constexpr (std::is_same_v<M, kutta3>) return {3, 3, 3, 0, 0};
-    else if constexpr (std::is_same_v<M, ssprk3>) return {3, 3, 3, 0, 0};
-    else if constexpr (std::is_same_v<M, rk4>) return {4, 4, 4, 0, 0};
-    else if constexpr (std::is_same_v<M, rk38>) return {4, 4, 4, 0, 0};
-    else if constexpr (std::is_same_v<M, bogacki_shampine32>) return {3, 4, 3, 4, 2};
-    else if constexpr (std::is_same_v<M, fehlberg45>) return {5, 6, 6, 6, 4};
-    else if constexpr (std::is_same_v<M, cash_karp54>) return {5, 6, 6, 6, 4};
-    else if constexpr (std::is_same_v<M, dormand_prince54>) return {5, 7, 6, 7, 4};
-    else if constexpr (std::is_same_v<M, fehlberg78>) return {8, 13, 12, 13, 7};
-    else if constexpr (std::is_same_v<M, dop853>) return {8, 12, 12, 12, 5};
-    else return {0, 0, 0, 0, 0};
+    if constexpr (std::is_same_v<M, euler>)
+        return {1, 1, 1, 0, 0};
+    else if constexpr (std::is_same_v<M, midpoint>)
+        return {2, 2, 2, 2, 1};
+    else if constexpr (std::is_same_v<M, heun>)
+        return {2, 2, 2, 0, 0};
+    else if constexpr (std::is_same_v<M, ralston2>)
+        return {2, 2, 2, 0, 0};
+    else if constexpr (std::is_same_v<M, kutta3>)
+        return {3, 3, 3, 0, 0};
+    else if constexpr (std::is_same_v<M, ssprk3>)
+        return {3, 3, 3, 0, 0};
+    else if constexpr (std::is_same_v<M, rk4>)
+        return {4, 4, 4, 0, 0};
+    else if constexpr (std::is_same_v<M, rk38>)
+        return {4, 4, 4, 0, 0};
+    else if constexpr (std::is_same_v<M, bogacki_shampine32>)
+        return {3, 4, 3, 4, 2};
+    else if constexpr (std::is_same_v<M, fehlberg45>)
+        return {5, 6, 6, 6, 4};
+    else if constexpr (std::is_same_v<M, cash_karp54>)
+        return {5, 6, 6, 6, 4};
+    else if constexpr (std::is_same_v<M, dormand_prince54>)
+        return {5, 7, 6, 7, 4};
+    else if constexpr (std::is_same_v<M, fehlberg78>)
+        return {8, 13, 12, 13, 7};
+    else if constexpr (std::is_same_v<M, dop853>)
+        return {8, 12, 12, 12, 5};
+    else
+        return {0, 0, 0, 0, 0};
 }
 
 }  // namespace
@@ -216,9 +231,12 @@ TEST_CASE("explicit_rk: float, double and long double steppers come from the sam
     std::array<float, 1> yf{1.0f};
     std::array<double, 1> yd{1.0};
     std::array<long double, 1> yl{1.0L};
-    REQUIRE(odestep::integrate(odestep::rk4<std::array<float, 1>>{}, decay, yf, 0.0f, 1.0f, 0.125f).status == odestep::status::ok);
-    REQUIRE(odestep::integrate(odestep::rk4<std::array<double, 1>>{}, decay, yd, 0.0, 1.0, 0.125).status == odestep::status::ok);
-    REQUIRE(odestep::integrate(odestep::rk4<std::array<long double, 1>>{}, decay, yl, 0.0L, 1.0L, 0.125L).status == odestep::status::ok);
+    REQUIRE(odestep::integrate(odestep::rk4<std::array<float, 1>>{}, decay, yf, 0.0f, 1.0f, 0.125f).status ==
+            odestep::status::ok);
+    REQUIRE(odestep::integrate(odestep::rk4<std::array<double, 1>>{}, decay, yd, 0.0, 1.0, 0.125).status ==
+            odestep::status::ok);
+    REQUIRE(odestep::integrate(odestep::rk4<std::array<long double, 1>>{}, decay, yl, 0.0L, 1.0L, 0.125L).status ==
+            odestep::status::ok);
     // RK4's amplification per step R(-h) = 1 - h + h^2/2 - h^3/6 + h^4/24, to the 8th power
     const long double h = 0.125L;
     const long double r = 1 - h + h * h / 2 - h * h * h / 6 + h * h * h * h / 24;

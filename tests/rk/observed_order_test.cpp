@@ -83,7 +83,9 @@ void check_order(const fit_plan& plan) {
         errors[i] = static_cast<double>(error_after<M, T>(static_cast<T>(plan.t_end), plan.coarsest_steps << i));
     const double slope = fitted_order(errors, points);
     INFO(doctest::String(M::name), ": errors ", errors[0], " ", errors[1], " ", errors[2], " ", errors[3]);
-    MESSAGE(doctest::String(M::name), ": order ", order, ", fitted slope ", slope, " (", doctest::String(sizeof(T) == sizeof(double) ? "double" : "long double"), ", error ", errors[0], " to ", errors[points - 1], ")");
+    MESSAGE(doctest::String(M::name), ": order ", order, ", fitted slope ", slope, " (",
+            doctest::String(sizeof(T) == sizeof(double) ? "double" : "long double"), ", error ", errors[0], " to ",
+            errors[points - 1], ")");
     CHECK(std::fabs(slope - order) < 0.2);
     CHECK(errors[points - 1] > 100.0 * static_cast<double>(std::numeric_limits<T>::epsilon()));  // above round-off
 }
@@ -116,8 +118,10 @@ TEST_CASE("every method works in float: its error is its double error to within 
         const double err_double = error_after<M, double>(20.0, n);
         const double err_float = static_cast<double>(error_after<M, float>(20.0f, n));
         // Round-off in float: a few ULPs of the solution (|y| <= e) per step, growing at most like the step count.
-        const double roundoff = 8.0 * static_cast<double>(n) * static_cast<double>(std::numeric_limits<float>::epsilon());
-        INFO(doctest::String(M::name), ": float error ", err_float, ", double error ", err_double, ", allowance ", roundoff);
+        const double roundoff =
+            8.0 * static_cast<double>(n) * static_cast<double>(std::numeric_limits<float>::epsilon());
+        INFO(doctest::String(M::name), ": float error ", err_float, ", double error ", err_double, ", allowance ",
+             roundoff);
         CHECK(std::fabs(err_float - err_double) <= roundoff);  // float tracks double to its own round-off
     });
 }

@@ -13,8 +13,8 @@
 
 namespace {
 
-using all_finders = std::tuple<odestep::bisection, odestep::illinois, odestep::anderson_bjorck, odestep::brent,
-                               odestep::itp>;
+using all_finders =
+    std::tuple<odestep::bisection, odestep::illinois, odestep::anderson_bjorck, odestep::brent, odestep::itp>;
 using secant_family = std::tuple<odestep::illinois, odestep::anderson_bjorck, odestep::brent>;
 
 template <class F, class... M>
@@ -80,15 +80,25 @@ void check_calls(const call_log<T>& log, T a, T fa, T b, T fb, const odestep::ro
 
 // The test functions, each written with f(a) < 0 <= f(b).
 template <class T>
-T parabola(T x) { return x * x - T(2); }
+T parabola(T x) {
+    return x * x - T(2);
+}
 template <class T>
-T exponential(T x) { return std::exp(x) - T(3); }  // std::exp(float) is the float overload
+T exponential(T x) {
+    return std::exp(x) - T(3);
+}  // std::exp(float) is the float overload
 template <class T>
-T dottie(T x) { return x - std::cos(x); }  // cos(x) - x negated, so that f(0) < 0 < f(1)
+T dottie(T x) {
+    return x - std::cos(x);
+}  // cos(x) - x negated, so that f(0) < 0 < f(1)
 template <class T>
-T cube(T x) { return x * x * x; }
+T cube(T x) {
+    return x * x * x;
+}
 template <class T>
-T step(T x) { return x < T(0.3) ? T(-1) : T(1); }  // sign(x - 0.3), with sign(0) = +1
+T step(T x) {
+    return x < T(0.3) ? T(-1) : T(1);
+}  // sign(x - 0.3), with sign(0) = +1
 template <class T>
 T flat(T x) {
     // (x - 0.7)^9 scaled by 1024^9 = 2^90 (exact: sign and shape unchanged). Unscaled, float's ninth power
@@ -100,11 +110,13 @@ T flat(T x) {
     return d4 * d4 * d;
 }
 template <class T>
-T linear(T x) { return T(4) * x - T(1); }  // exact in binary: 4x and, near 0.25, 4x - 1 (Sterbenz)
+T linear(T x) {
+    return T(4) * x - T(1);
+}  // exact in binary: 4x and, near 0.25, 4x - 1 (Sterbenz)
 
 // Roots, to more digits than long double holds.
-constexpr long double sqrt2 = 1.41421356237309504880168872420969807857L;  // sqrt(2), OEIS A002193
-constexpr long double ln3 = 1.09861228866810969139524523692252570465L;    // ln 3, OEIS A002391
+constexpr long double sqrt2 = 1.41421356237309504880168872420969807857L;          // sqrt(2), OEIS A002193
+constexpr long double ln3 = 1.09861228866810969139524523692252570465L;            // ln 3, OEIS A002391
 constexpr long double dottie_number = 0.73908513321516064165531208767387340401L;  // cos x = x, OEIS A003957
 
 template <class T>
@@ -122,10 +134,10 @@ std::array<problem<T>, 7> problems() {
         {"x^2 - 2", parabola<T>, T(1), T(2), sqrt2, false},
         {"exp(x) - 3", exponential<T>, T(0), T(2), ln3, false},
         {"x - cos x", dottie<T>, T(0), T(1), dottie_number, false},
-        {"x^3", cube<T>, T(-1), T(2), 0.0L, true},                    // a triple root at 0
+        {"x^3", cube<T>, T(-1), T(2), 0.0L, true},  // a triple root at 0
         {"sign(x - 0.3)", step<T>, T(0), T(1), static_cast<long double>(T(0.3)), true},
         {"(x - 0.7)^9", flat<T>, T(0), T(1), static_cast<long double>(T(0.7)), true},
-        {"4x - 1", linear<T>, T(-1), T(2), 0.25L, true},             // 0.25 exactly
+        {"4x - 1", linear<T>, T(-1), T(2), 0.25L, true},  // 0.25 exactly
     }};
 }
 
@@ -216,7 +228,7 @@ static_assert(odestep::itp::worst_case_evaluations(1.0, 0.001) == 11);
 static_assert(odestep::itp::worst_case_evaluations(1.0, 1.0) == 0);
 static_assert(odestep::illinois::worst_case_evaluations(1.0, 0.001) == 22);
 static_assert(odestep::anderson_bjorck::worst_case_evaluations(3.0f, 1.0f) == 6);  // n = 2
-static_assert(odestep::brent::worst_case_evaluations(1.0, 0.5) == 4);             // n = 1
+static_assert(odestep::brent::worst_case_evaluations(1.0, 0.5) == 4);              // n = 1
 static_assert(odestep::brent::worst_case_evaluations(1.0, 1.0) == 0);
 // 4 eps (|1| + |2|) = 12 eps on [1, 2]: 2^52 / 12 lies between 2^48 and 2^49.
 static_assert(odestep::bisection::worst_case_evaluations(1.0, 12.0 * std::numeric_limits<double>::epsilon()) == 49);

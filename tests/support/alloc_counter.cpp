@@ -24,7 +24,7 @@ std::size_t count = 0;
     std::abort();  // the -fno-exceptions test build
 #endif
 }  // test infrastructure: single-threaded doctest run
-}
+}  // namespace
 
 std::size_t odestep_test::allocations() noexcept { return count; }
 

@@ -153,10 +153,10 @@ void elementary_weight(const odestep::butcher_tableau<real, S, E>& tab, const tr
 
 /// How well one weight vector meets the conditions of one order.
 struct order_summary {
-    std::size_t trees = 0;      // conditions checked
-    std::size_t violated = 0;   // of those, the ones whose residual is above the round-off tolerance
-    real worst_residual = 0;    // largest |sum_i w_i Phi_i(t) - 1/gamma(t)|
-    real worst_ratio = 0;       // largest residual / (effective epsilon x magnitude of the terms)
+    std::size_t trees = 0;     // conditions checked
+    std::size_t violated = 0;  // of those, the ones whose residual is above the round-off tolerance
+    real worst_residual = 0;   // largest |sum_i w_i Phi_i(t) - 1/gamma(t)|
+    real worst_ratio = 0;      // largest residual / (effective epsilon x magnitude of the terms)
 };
 
 // A condition holds when its residual is within `round_off_factor` effective epsilons of the magnitude of the

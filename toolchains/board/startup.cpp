@@ -51,8 +51,8 @@ int odestep_board_main(int argc, char** argv) __asm__("main");
 // here; every fault lands in Default_Handler, which reports it and ends the run. The linker script places
 // .vectors where the core reads its vector table from on reset.
 struct odestep_board_vector_table {
-  void* initial_stack_pointer;
-  void (*handlers[15])();
+    void* initial_stack_pointer;
+    void (*handlers[15])();
 };
 
 __attribute__((section(".vectors"), used)) static const odestep_board_vector_table vectors = {
@@ -79,10 +79,10 @@ namespace {
 // One semihosting call: operation in r0, argument block address in r1, result in r0. (On hardware without a
 // debugger attached, BKPT halts the core: semihosting is for the emulator and for debug sessions only.)
 int semihosting_call(std::uint32_t operation, const void* argument) {
-  register std::uint32_t r0 __asm__("r0") = operation;
-  register const void* r1 __asm__("r1") = argument;
-  __asm__ volatile("bkpt 0xab" : "+r"(r0) : "r"(r1) : "memory");
-  return static_cast<int>(r0);
+    register std::uint32_t r0 __asm__("r0") = operation;
+    register const void* r1 __asm__("r1") = argument;
+    __asm__ volatile("bkpt 0xab" : "+r"(r0) : "r"(r1) : "memory");
+    return static_cast<int>(r0);
 }
 
 constexpr std::uint32_t sys_write0 = 0x04;         // write a NUL-terminated string to the console
@@ -93,89 +93,89 @@ constexpr std::uint32_t adp_stopped_application_exit = 0x20026;
 
 // Ends the run: QEMU exits with `status`.
 [[noreturn]] void semihosting_exit(int status) {
-  const std::uint32_t block[2] = {adp_stopped_application_exit, static_cast<std::uint32_t>(status)};
-  semihosting_call(sys_exit_extended, block);
-  // A host without the extended call: plain SYS_EXIT reports success or failure only.
-  semihosting_call(sys_exit, reinterpret_cast<const void*>(status == 0 ? adp_stopped_application_exit : 0u));
-  for (;;) {
-  }
+    const std::uint32_t block[2] = {adp_stopped_application_exit, static_cast<std::uint32_t>(status)};
+    semihosting_call(sys_exit_extended, block);
+    // A host without the extended call: plain SYS_EXIT reports success or failure only.
+    semihosting_call(sys_exit, reinterpret_cast<const void*>(status == 0 ? adp_stopped_application_exit : 0u));
+    for (;;) {
+    }
 }
 
 // Splits the semihosting command line into argv (words separated by spaces; no quoting).
 struct command_line {
-  char text[256];
-  char* argv[17];
-  int argc;
+    char text[256];
+    char* argv[17];
+    int argc;
 };
 command_line arguments;
 
 void read_command_line() {
-  struct {
-    char* buffer;
-    std::uint32_t length;
-  } block = {arguments.text, sizeof(arguments.text) - 1};
-  arguments.argc = 0;
-  arguments.argv[0] = nullptr;
-  if (semihosting_call(sys_get_cmdline, &block) != 0) {
-    return;
-  }
-  arguments.text[block.length] = '\0';
-  char* cursor = arguments.text;
-  while (*cursor != '\0' && arguments.argc < 16) {
-    while (*cursor == ' ') {
-      *cursor++ = '\0';
+    struct {
+        char* buffer;
+        std::uint32_t length;
+    } block = {arguments.text, sizeof(arguments.text) - 1};
+    arguments.argc = 0;
+    arguments.argv[0] = nullptr;
+    if (semihosting_call(sys_get_cmdline, &block) != 0) {
+        return;
     }
-    if (*cursor == '\0') {
-      break;
+    arguments.text[block.length] = '\0';
+    char* cursor = arguments.text;
+    while (*cursor != '\0' && arguments.argc < 16) {
+        while (*cursor == ' ') {
+            *cursor++ = '\0';
+        }
+        if (*cursor == '\0') {
+            break;
+        }
+        arguments.argv[arguments.argc++] = cursor;
+        while (*cursor != '\0' && *cursor != ' ') {
+            ++cursor;
+        }
     }
-    arguments.argv[arguments.argc++] = cursor;
-    while (*cursor != '\0' && *cursor != ' ') {
-      ++cursor;
-    }
-  }
-  arguments.argv[arguments.argc] = nullptr;
+    arguments.argv[arguments.argc] = nullptr;
 }
 
 }  // namespace
 
 extern "C" [[noreturn]] void Reset_Handler() {
-  // Copy .data's initial values from flash, then zero .bss. Volatile accesses keep GCC from turning these
-  // loops into memcpy/memset calls (the C library is not set up yet).
-  volatile std::uint32_t* destination = __data_start__;
-  const volatile std::uint32_t* source = __data_load__;
-  while (destination < __data_end__) {
-    *destination++ = *source++;
-  }
-  for (volatile std::uint32_t* word = __bss_start__; word < __bss_end__; ++word) {
-    *word = 0;
-  }
+    // Copy .data's initial values from flash, then zero .bss. Volatile accesses keep GCC from turning these
+    // loops into memcpy/memset calls (the C library is not set up yet).
+    volatile std::uint32_t* destination = __data_start__;
+    const volatile std::uint32_t* source = __data_load__;
+    while (destination < __data_end__) {
+        *destination++ = *source++;
+    }
+    for (volatile std::uint32_t* word = __bss_start__; word < __bss_end__; ++word) {
+        *word = 0;
+    }
 
 #if defined(__ARM_FP) || defined(__ARM_FEATURE_MVE)
-  // Grant full access to coprocessors 10 and 11 (the FPU, and MVE on Armv8.1-M) in CPACR, before any
-  // floating-point instruction runs.
-  constexpr std::uintptr_t cpacr_address = 0xE000ED88u;
-  *reinterpret_cast<volatile std::uint32_t*>(cpacr_address) |= (0xFu << 20);
-  __asm__ volatile("dsb\n\tisb" ::: "memory");
+    // Grant full access to coprocessors 10 and 11 (the FPU, and MVE on Armv8.1-M) in CPACR, before any
+    // floating-point instruction runs.
+    constexpr std::uintptr_t cpacr_address = 0xE000ED88u;
+    *reinterpret_cast<volatile std::uint32_t*>(cpacr_address) |= (0xFu << 20);
+    __asm__ volatile("dsb\n\tisb" ::: "memory");
 #endif
 
 #if !ODESTEP_BOARD_BARE
-  initialise_monitor_handles();
+    initialise_monitor_handles();
 #endif
-  __libc_init_array();
-  read_command_line();
-  const int status = odestep_board_main(arguments.argc, arguments.argv);
+    __libc_init_array();
+    read_command_line();
+    const int status = odestep_board_main(arguments.argc, arguments.argv);
 #if ODESTEP_BOARD_BARE
-  semihosting_exit(status);
+    semihosting_exit(status);
 #else
-  std::exit(status);  // flushes stdout; newlib's rdimon _exit then hands the status to semihosting
+    std::exit(status);  // flushes stdout; newlib's rdimon _exit then hands the status to semihosting
 #endif
 }
 
 // Any exception other than reset: say so on the semihosting console and end the run with a distinctive
 // status (so ctest reports a failure instead of waiting for its timeout on a core spinning in a handler).
 extern "C" [[noreturn]] void Default_Handler() {
-  std::uint32_t ipsr;
-  __asm__ volatile("mrs %0, ipsr" : "=r"(ipsr));
-  semihosting_call(sys_write0, "odestep board: unexpected exception, exit status 128 + exception number\n");
-  semihosting_exit(static_cast<int>(128u + (ipsr & 0x1FFu)));
+    std::uint32_t ipsr;
+    __asm__ volatile("mrs %0, ipsr" : "=r"(ipsr));
+    semihosting_call(sys_write0, "odestep board: unexpected exception, exit status 128 + exception number\n");
+    semihosting_exit(static_cast<int>(128u + (ipsr & 0x1FFu)));
 }

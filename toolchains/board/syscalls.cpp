@@ -16,8 +16,8 @@ void* __dso_handle = nullptr;
 
 // libstdc++'s std::random_device (and newlib's arc4random) ask for entropy; a test image has none to give.
 int getentropy(void* /*buffer*/, std::size_t /*length*/) {
-  errno = ENOSYS;
-  return -1;
+    errno = ENOSYS;
+    return -1;
 }
 
 }  // extern "C"

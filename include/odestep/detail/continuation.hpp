@@ -22,16 +22,14 @@ namespace odestep::detail {
 // nothing, and with a finite allowance and a finite t a non-finite t_now fails the comparison by itself.
 template <class State, class T = value_type_t<State>>
 struct continuation {
-    T t = T(0);        // the time the next step is expected at; NaN when that was not finite
+    T t = T(0);  // the time the next step is expected at; NaN when that was not finite
     T dt = T(0);
     T t_start = T(0);  // where this history began: the counter's times are t_start + i dt
     const State* x = nullptr;
 
     /// The same position object at the expected time, whatever the dt (what a kept acceleration a(t, x)
     /// needs: it does not depend on the next step's size).
-    constexpr bool at(T t_now, const State& x_now) const noexcept {
-        return x == &x_now && (t_now == t || near(t_now));
-    }
+    constexpr bool at(T t_now, const State& x_now) const noexcept { return x == &x_now && (t_now == t || near(t_now)); }
     /// ... and the same dt (what a history on a grid needs).
     constexpr bool matches(T t_now, T dt_now, const State& x_now) const noexcept {
         return dt == dt_now && at(t_now, x_now);

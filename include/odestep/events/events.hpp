@@ -148,9 +148,8 @@ struct is_event_set<event_set<Finder, Events...>> : std::true_type {};
 // default tolerance (at least 4 eps dt): enough for it always to converge.
 template <class T, class Finder>
 constexpr std::size_t event_iterations(event_limits limits) noexcept {
-    return limits.max_iterations != 0
-               ? limits.max_iterations
-               : Finder::worst_case_evaluations(T(1), T(4) * std::numeric_limits<T>::epsilon());
+    return limits.max_iterations != 0 ? limits.max_iterations
+                                      : Finder::worst_case_evaluations(T(1), T(4) * std::numeric_limits<T>::epsilon());
 }
 }  // namespace detail
 
@@ -237,8 +236,8 @@ constexpr bool crosses(direction d, T before, T after) noexcept {
 // What the loop remembers of each event between evaluation points.
 template <class T>
 struct event_memory {
-    T g = T(0);          // g at the last evaluation point: crossings are measured from it
-    T last = T(0);       // time of the last firing
+    T g = T(0);     // g at the last evaluation point: crossings are measured from it
+    T last = T(0);  // time of the last firing
     std::size_t fired = 0;
     bool armed = false;  // may fire: g has been seen away from zero (beyond the band, after the dead time)
 };
@@ -377,8 +376,7 @@ public:
     // of the step again from the event.
     template <class Stepper, class System, class Sink>
     ODESTEP_EVENTS_NOINLINE advance_result<T> advance_rest(Stepper& stepper, System& f, set_type& set, refs y,
-                                                           pack& start, values g_end, T t_s, T h, T t_end,
-                                                           Sink sink) {
+                                                           pack& start, values g_end, T t_s, T h, T t_end, Sink sink) {
         status s = status::ok;
         std::size_t fired_here = 0;
         bool partial = false;
@@ -437,8 +435,7 @@ public:
                     T b = hi;
                     load(hi_refs, b_state);
                     values g_b = g_hi;
-                    const status ls =
-                        locate(scratch, f, set, start, t_s, h, lo, lo_state, a, b, a_state, b_state, g_b);
+                    const status ls = locate(scratch, f, set, start, t_s, h, lo, lo_state, a, b, a_state, b_state, g_b);
                     if (ls != status::ok) return fail(y, lo_state, t_s + lo, ls, fired_here);
                     // Fire, in the order given, every event that has crossed by b, at t* = t_s + a with
                     // the integrator's state there. From here on lo_state is free: it holds the state before
@@ -502,8 +499,9 @@ public:
                 if (partial) reset_if_any(stepper);
                 return {status::ok, t_end, fired_here, no_event};
             }
-            if (h == T(0)) return {status::ok, t_end, fired_here, no_event};  // the event was at the step's end
-                                                                              // (to rounding): y is already there
+            if (h == T(0))
+                return {status::ok, t_end, fired_here, no_event};  // the event was at the step's end
+                                                                   // (to rounding): y is already there
             partial = true;
         }
     }
@@ -768,7 +766,6 @@ private:
     }
 };
 
-
 // A tick count as T, for t0 + n dt. Where std::size_t has 64 bits this is the one conversion. On a 32-bit
 // target a 64-bit integer to floating-point conversion is a library call, so the count is converted as two
 // 32-bit halves: while the high half is zero (the first 2^32 ticks) the result is the low half's hardware
@@ -817,8 +814,8 @@ constexpr void require_self_starting() noexcept {
 }
 
 template <class T, class Stepper, class System, class Set, class Observer, class State, class... More>
-event_integrate_result<T, Set::size> drive_events(Stepper& stepper, System& f, Set& set, Observer& observe, T t0,
-                                                   T t1, T dt, State& y0, More&... ys) {
+event_integrate_result<T, Set::size> drive_events(Stepper& stepper, System& f, Set& set, Observer& observe, T t0, T t1,
+                                                  T dt, State& y0, More&... ys) {
     require_self_starting<Stepper>();
     constexpr std::size_t K = 1 + sizeof...(More);
     using engine_type = event_engine<State, K, Set>;
@@ -928,7 +925,8 @@ public:
     using value_type = value_type_t<state_type>;
     using set_type = Set;
     static constexpr std::size_t capacity = Capacity;
-    static constexpr std::size_t arity = detail::event_arity<state_type, std::tuple_element_t<0, decltype(Set::events)>>();
+    static constexpr std::size_t arity =
+        detail::event_arity<state_type, std::tuple_element_t<0, decltype(Set::events)>>();
 
     constexpr event_stepper(Stepper stepper, Set events) : stepper_(stepper), set_(events) {
         detail::require_self_starting<Stepper>();
@@ -1058,7 +1056,7 @@ private:
     value_type t0_ = value_type(0);
     value_type dt_ = value_type(0);
     value_type t_now_ = value_type(0);  // the time of the state: t0 + n dt computed at the last tick's end
-    std::uint64_t n_ = 0;  // 64 bits on every target: a 32-bit count wraps after 49.7 days of 1 kHz ticks
+    std::uint64_t n_ = 0;               // 64 bits on every target: a 32-bit count wraps after 49.7 days of 1 kHz ticks
     clock_state clock_ = clock_state::idle;
     // The firings of a tick that had some (its first Capacity), copied into its tick_result.
     std::array<event_firing<value_type>, Capacity> firings_{};

@@ -18,7 +18,6 @@
 
 namespace odestep {
 
-
 namespace detail {
 template <class Stepper>
 struct is_explicit_rk : std::false_type {};
@@ -131,7 +130,7 @@ public:
     std::size_t history_size() const noexcept { return count_; }
 
 private:
-    std::array<State, M> history_{};  // ring buffer; the next f_n goes to slot_, f_{n-j} is at slot_ - j mod M
+    std::array<State, M> history_{};      // ring buffer; the next f_n goes to slot_, f_{n-j} is at slot_ - j mod M
     detail::continuation<State> next_{};  // where the next step must start (t + dt of the last), and its dt
     std::size_t count_ = 0;
     std::size_t slot_ = 0;
@@ -158,7 +157,8 @@ private:
     // times a constant and the history is read through K - 1 pointers chosen once per step; the loop over
     // the components is unrolled except when optimizing for size.
     template <class W>
-    ODESTEP_INLINE void combine(State& out, const State& y, const State& first, const State& second, T dt) const noexcept {
+    ODESTEP_INLINE void combine(State& out, const State& y, const State& first, const State& second,
+                                T dt) const noexcept {
         combine_terms<W>(out, y, first, second, dt, std::make_index_sequence<W::size - 1>{});
     }
     template <class W, std::size_t... J>

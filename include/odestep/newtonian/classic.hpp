@@ -107,8 +107,7 @@ public:
 
 private:
     template <class Accel>
-    static status advance(Accel& a, State& x, State& v, value_type t, value_type dt, State& error_x,
-                          State& error_v) {
+    static status advance(Accel& a, State& x, State& v, value_type t, value_type dt, State& error_x, State& error_v) {
         using T = value_type;
         const T half = dt / T(2);
         const State a0 = detail::acceleration(a, t, x, v);
@@ -210,7 +209,7 @@ public:
         ODESTEP_UNROLL
         for (std::size_t n = 0; n < v1.size(); ++n) {
             const T x2 = T(2) * x1[n] - x[n] + a1[n] * dt2;  // x_{n+2}
-            v1[n] = (x2 - x[n]) / two_dt;                      // v_{n+1} = (x_{n+2} - x_n) / (2 dt)
+            v1[n] = (x2 - x[n]) / two_dt;                    // v_{n+1} = (x_{n+2} - x_n) / (2 dt)
         }
         if (!detail::all_finite(x1, v1)) return status::non_finite;
         x_prev_ = x;
@@ -303,8 +302,7 @@ private:
         State v1;
         if (continuing) {
             ODESTEP_UNROLL
-            for (std::size_t n = 0; n < v1.size(); ++n)
-                v1[n] = v[n] + (T(2) * a1[n] + T(5) * a0[n] - a_prev[n]) * dt_6;
+            for (std::size_t n = 0; n < v1.size(); ++n) v1[n] = v[n] + (T(2) * a1[n] + T(5) * a0[n] - a_prev[n]) * dt_6;
         } else {
             ODESTEP_UNROLL
             for (std::size_t n = 0; n < v1.size(); ++n) v1[n] = v[n] + (a0[n] + a1[n]) * (dt / T(2));
@@ -365,8 +363,8 @@ public:
             for (std::size_t n = 0; n < x1.size(); ++n) {
                 v1[n] = v[n] + (ap[n] + a0[n]) * half;
                 x1[n] = x[n] + (v1[n] + v[n]) * half;
-                change = detail::max_value(change, detail::max_value(detail::abs_value(x1[n] - xp[n]),
-                                                                     detail::abs_value(v1[n] - vp[n])));
+                change = detail::max_value(
+                    change, detail::max_value(detail::abs_value(x1[n] - xp[n]), detail::abs_value(v1[n] - vp[n])));
                 size = detail::max_value(size, detail::max_value(detail::abs_value(x1[n]), detail::abs_value(v1[n])));
             }
             if (!detail::all_finite(x1, v1)) return status::non_finite;

@@ -280,16 +280,23 @@ private:
     }
 };
 
-
 // The named steppers.
-template <class State> using euler_cromer = splitting<tables::euler_cromer, State>;
-template <class State> using euler_cromer_drift_first = splitting<tables::euler_cromer_drift_first, State>;
-template <class State> using velocity_verlet = splitting<tables::velocity_verlet, State>;
-template <class State> using leapfrog = splitting<tables::velocity_verlet, State>;
-template <class State> using position_verlet = splitting<tables::position_verlet, State>;
-template <class State> using forest_ruth = splitting<tables::forest_ruth, State>;
-template <class State> using yoshida6 = splitting<tables::yoshida6, State>;
-template <class State> using blanes_moan4 = splitting<tables::blanes_moan4, State>;
+template <class State>
+using euler_cromer = splitting<tables::euler_cromer, State>;
+template <class State>
+using euler_cromer_drift_first = splitting<tables::euler_cromer_drift_first, State>;
+template <class State>
+using velocity_verlet = splitting<tables::velocity_verlet, State>;
+template <class State>
+using leapfrog = splitting<tables::velocity_verlet, State>;
+template <class State>
+using position_verlet = splitting<tables::position_verlet, State>;
+template <class State>
+using forest_ruth = splitting<tables::forest_ruth, State>;
+template <class State>
+using yoshida6 = splitting<tables::yoshida6, State>;
+template <class State>
+using blanes_moan4 = splitting<tables::blanes_moan4, State>;
 
 }  // namespace odestep
 #endif

@@ -29,10 +29,10 @@ namespace detail {
 template <class T, std::size_t S>
 struct factored_weights {
     T g = T(0);
-    std::array<T, S> r{};             // 0 where w_j = 0
-    std::size_t classes = 0;          // classes with |r| != 1
+    std::array<T, S> r{};               // 0 where w_j = 0
+    std::size_t classes = 0;            // classes with |r| != 1
     std::array<std::size_t, S> lead{};  // the first member of each, in summing order
-    std::size_t first_unit = S;       // the first term with |r| = 1
+    std::size_t first_unit = S;         // the first term with |r| = 1
 };
 
 template <class T, std::size_t S>
@@ -172,8 +172,7 @@ public:
             add_all(total, next);
             add_all(total, err);
         }
-        if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) &&
-            !(detail::each_finite(next) && detail::each_finite(err)))
+        if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) && !(detail::each_finite(next) && detail::each_finite(err)))
             return status::non_finite;
         detail::assign(y, next);
         detail::assign(error, err);
@@ -370,21 +369,36 @@ private:
 
 // The named steppers. A pair steps as a method of its higher order; its error-estimating `step` overload
 // returns the difference to the embedded solution.
-template <class State> using euler = explicit_rk<tables::euler, State>;
-template <class State> using midpoint = explicit_rk<tables::midpoint, State>;
-template <class State> using euler_richardson = explicit_rk<tables::midpoint, State>;
-template <class State> using heun = explicit_rk<tables::heun, State>;
-template <class State> using ralston2 = explicit_rk<tables::ralston2, State>;
-template <class State> using kutta3 = explicit_rk<tables::kutta3, State>;
-template <class State> using ssprk3 = explicit_rk<tables::ssprk3, State>;
-template <class State> using rk4 = explicit_rk<tables::rk4, State>;
-template <class State> using rk38 = explicit_rk<tables::rk38, State>;
-template <class State> using bogacki_shampine32 = explicit_rk<tables::bogacki_shampine32, State>;
-template <class State> using fehlberg45 = explicit_rk<tables::fehlberg45, State>;
-template <class State> using cash_karp54 = explicit_rk<tables::cash_karp54, State>;
-template <class State> using dormand_prince54 = explicit_rk<tables::dormand_prince54, State>;
-template <class State> using fehlberg78 = explicit_rk<tables::fehlberg78, State>;
-template <class State> using dop853 = explicit_rk<tables::dop853, State>;
+template <class State>
+using euler = explicit_rk<tables::euler, State>;
+template <class State>
+using midpoint = explicit_rk<tables::midpoint, State>;
+template <class State>
+using euler_richardson = explicit_rk<tables::midpoint, State>;
+template <class State>
+using heun = explicit_rk<tables::heun, State>;
+template <class State>
+using ralston2 = explicit_rk<tables::ralston2, State>;
+template <class State>
+using kutta3 = explicit_rk<tables::kutta3, State>;
+template <class State>
+using ssprk3 = explicit_rk<tables::ssprk3, State>;
+template <class State>
+using rk4 = explicit_rk<tables::rk4, State>;
+template <class State>
+using rk38 = explicit_rk<tables::rk38, State>;
+template <class State>
+using bogacki_shampine32 = explicit_rk<tables::bogacki_shampine32, State>;
+template <class State>
+using fehlberg45 = explicit_rk<tables::fehlberg45, State>;
+template <class State>
+using cash_karp54 = explicit_rk<tables::cash_karp54, State>;
+template <class State>
+using dormand_prince54 = explicit_rk<tables::dormand_prince54, State>;
+template <class State>
+using fehlberg78 = explicit_rk<tables::fehlberg78, State>;
+template <class State>
+using dop853 = explicit_rk<tables::dop853, State>;
 
 }  // namespace odestep
 

@@ -168,8 +168,8 @@ struct bisection_rule {
 template <class T, bool Anderson_Bjorck>
 struct false_position_rule {
     static constexpr bool paced = true;
-    T ga, gb;      // working values at a and b
-    T f_last;      // f at the last point
+    T ga, gb;            // working values at a and b
+    T f_last;            // f at the last point
     bool last_negative;  // the last point was on the negative side (it is a)
 
     constexpr T propose(const root_bracket<T>& r, T tol, T) const noexcept {
@@ -336,9 +336,8 @@ struct bisection {
     }
 
     template <class T, class F>
-    [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(F&& f, T a, T fa, T b, T fb, T tol,
-                                                                         std::size_t cap) noexcept(
-        detail::nothrow_bracket_call_v<T, F>) {
+    [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(
+        F&& f, T a, T fa, T b, T fb, T tol, std::size_t cap) noexcept(detail::nothrow_bracket_call_v<T, F>) {
         return detail::narrow_with(f, a, fa, b, fb, tol, cap, detail::bisection_rule<T>{});
     }
 };
@@ -349,9 +348,8 @@ struct bisection {
 /// at most 2 n + 2 calls, n = bisection's count.
 struct illinois : detail::paced_secant_family {
     template <class T, class F>
-    [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(F&& f, T a, T fa, T b, T fb, T tol,
-                                                                         std::size_t cap) noexcept(
-        detail::nothrow_bracket_call_v<T, F>) {
+    [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(
+        F&& f, T a, T fa, T b, T fb, T tol, std::size_t cap) noexcept(detail::nothrow_bracket_call_v<T, F>) {
         return detail::narrow_with(f, a, fa, b, fb, tol, cap, detail::false_position_rule<T, false>{fa, fb, fb, false});
     }
 };
@@ -362,9 +360,8 @@ struct illinois : detail::paced_secant_family {
 /// equation", BIT 13 (1973) 253-264). Safeguarded: at most 2 n + 2 calls, n = bisection's count.
 struct anderson_bjorck : detail::paced_secant_family {
     template <class T, class F>
-    [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(F&& f, T a, T fa, T b, T fb, T tol,
-                                                                         std::size_t cap) noexcept(
-        detail::nothrow_bracket_call_v<T, F>) {
+    [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(
+        F&& f, T a, T fa, T b, T fb, T tol, std::size_t cap) noexcept(detail::nothrow_bracket_call_v<T, F>) {
         return detail::narrow_with(f, a, fa, b, fb, tol, cap, detail::false_position_rule<T, true>{fa, fb, fb, false});
     }
 };
@@ -375,12 +372,10 @@ struct anderson_bjorck : detail::paced_secant_family {
 /// 2 n + 2, n = bisection's count.
 struct brent : detail::paced_secant_family {
     template <class T, class F>
-    [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(F&& f, T a, T fa, T b, T fb, T tol,
-                                                                         std::size_t cap) noexcept(
-        detail::nothrow_bracket_call_v<T, F>) {
+    [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(
+        F&& f, T a, T fa, T b, T fb, T tol, std::size_t cap) noexcept(detail::nothrow_bracket_call_v<T, F>) {
         // Brent's start: b the newer end, c = a the other, d = e = b - a.
-        return detail::narrow_with(f, a, fa, b, fb, tol, cap,
-                                   detail::brent_rule<T>{a, fa, b, fb, a, fa, b - a, b - a});
+        return detail::narrow_with(f, a, fa, b, fb, tol, cap, detail::brent_rule<T>{a, fa, b, fb, a, fa, b - a, b - a});
     }
 };
 
@@ -399,9 +394,8 @@ struct itp {
     }
 
     template <class T, class F>
-    [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(F&& f, T a, T fa, T b, T fb, T tol,
-                                                                         std::size_t cap) noexcept(
-        detail::nothrow_bracket_call_v<T, F>) {
+    [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(
+        F&& f, T a, T fa, T b, T fb, T tol, std::size_t cap) noexcept(detail::nothrow_bracket_call_v<T, F>) {
         // reach = tol 2^(n_1/2): the least tol 2^k >= b - a (k = 0 when the loop will make no call). Doubling
         // is exact; `reach > 0` guards a tol <= 0 against looping forever.
         const T width = b - a;

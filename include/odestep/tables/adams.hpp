@@ -38,6 +38,7 @@ struct adams_table {
 /// nodes s = 0, -1, ..., -(k-1) (explicit) and s = 1, 0, ..., -(k-2) (implicit); the test suite checks the
 /// order conditions sum_j w_j s_j^q = 1/(q+1), q < k, and that q = k fails.
 namespace tables {
+// clang-format off  (the tables keep their published layout)
 
 /// Two-step Adams-Bashforth, order 2:  y_{n+1} = y_n + h (3 f_n - f_{n-1}) / 2.
 struct bashforth2 {
@@ -76,12 +77,12 @@ struct bashforth5 {
 struct bashforth_moulton4 {
     static constexpr const char* name = "Adams-Bashforth-Moulton 4 (PECE)";
     template <class T>
-    static constexpr adams_table<T, 4, 4> table{
-        {T(55) / T(24), T(-59) / T(24), T(37) / T(24), T(-9) / T(24)},
-        {T(9) / T(24), T(19) / T(24), T(-5) / T(24), T(1) / T(24)},
-        4};
+    static constexpr adams_table<T, 4, 4> table{{T(55) / T(24), T(-59) / T(24), T(37) / T(24), T(-9) / T(24)},
+                                                {T(9) / T(24), T(19) / T(24), T(-5) / T(24), T(1) / T(24)},
+                                                4};
 };
 
+// clang-format on
 }  // namespace tables
 
 }  // namespace odestep

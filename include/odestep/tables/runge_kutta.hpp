@@ -9,21 +9,18 @@
 #include <limits>
 
 namespace odestep::tables {
+// clang-format off  (the tables keep their published layout)
 
 /// Classic fourth-order Runge-Kutta (Kutta 1901; Hairer, Norsett & Wanner, Solving ODE I, Table II.1.2).
 struct rk4 {
     static constexpr const char* name = "classic RK4";
     template <class T>
-    static constexpr butcher_tableau<T, 4> table{
-        {{{},
-          {T(1) / T(2)},
-          {T(0), T(1) / T(2)},
-          {T(0), T(0), T(1)}}},
-        {T(1) / T(6), T(1) / T(3), T(1) / T(3), T(1) / T(6)},
-        {T(0), T(1) / T(2), T(1) / T(2), T(1)},
-        {},
-        4,
-        {}};
+    static constexpr butcher_tableau<T, 4> table{{{{}, {T(1) / T(2)}, {T(0), T(1) / T(2)}, {T(0), T(0), T(1)}}},
+                                                 {T(1) / T(6), T(1) / T(3), T(1) / T(3), T(1) / T(6)},
+                                                 {T(0), T(1) / T(2), T(1) / T(2), T(1)},
+                                                 {},
+                                                 4,
+                                                 {}};
 };
 
 /// Forward Euler (Euler 1768, Institutiones Calculi Integralis; Hairer, Norsett & Wanner, Solving ODE I,
@@ -31,13 +28,7 @@ struct rk4 {
 struct euler {
     static constexpr const char* name = "forward Euler";
     template <class T>
-    static constexpr butcher_tableau<T, 1> table{
-        {{{}}},
-        {T(1)},
-        {T(0)},
-        {},
-        1,
-        {}};
+    static constexpr butcher_tableau<T, 1> table{{{{}}}, {T(1)}, {T(0)}, {}, 1, {}};
 };
 
 /// Explicit midpoint rule = Euler-Richardson (Runge 1895, Math. Ann. 46, 167-178; Hairer, Norsett & Wanner,
@@ -47,13 +38,7 @@ struct midpoint {
     static constexpr const char* name = "explicit midpoint (Euler-Richardson) with Euler estimate";
     template <class T>
     static constexpr butcher_tableau<T, 2, 1> table{
-        {{{},
-          {T(1) / T(2)}}},
-        {T(0), T(1)},
-        {T(0), T(1) / T(2)},
-        {{{T(1), T(0)}}},
-        2,
-        {1}};
+        {{{}, {T(1) / T(2)}}}, {T(0), T(1)}, {T(0), T(1) / T(2)}, {{{T(1), T(0)}}}, 2, {1}};
 };
 
 /// Heun's method = modified Euler / explicit trapezoidal rule (Heun 1900, Z. Math. Phys. 45, 23-38;
@@ -61,14 +46,7 @@ struct midpoint {
 struct heun {
     static constexpr const char* name = "Heun (explicit trapezoidal)";
     template <class T>
-    static constexpr butcher_tableau<T, 2> table{
-        {{{},
-          {T(1)}}},
-        {T(1) / T(2), T(1) / T(2)},
-        {T(0), T(1)},
-        {},
-        2,
-        {}};
+    static constexpr butcher_tableau<T, 2> table{{{{}, {T(1)}}}, {T(1) / T(2), T(1) / T(2)}, {T(0), T(1)}, {}, 2, {}};
 };
 
 /// Ralston's second-order method, the minimum error bound member of the two-stage family (Ralston 1962,
@@ -77,13 +55,7 @@ struct ralston2 {
     static constexpr const char* name = "Ralston 2";
     template <class T>
     static constexpr butcher_tableau<T, 2> table{
-        {{{},
-          {T(2) / T(3)}}},
-        {T(1) / T(4), T(3) / T(4)},
-        {T(0), T(2) / T(3)},
-        {},
-        2,
-        {}};
+        {{{}, {T(2) / T(3)}}}, {T(1) / T(4), T(3) / T(4)}, {T(0), T(2) / T(3)}, {}, 2, {}};
 };
 
 /// Kutta's third-order method (Kutta 1901, Z. Math. Phys. 46, 435-453; Hairer, Norsett & Wanner,
@@ -91,15 +63,12 @@ struct ralston2 {
 struct kutta3 {
     static constexpr const char* name = "Kutta 3";
     template <class T>
-    static constexpr butcher_tableau<T, 3> table{
-        {{{},
-          {T(1) / T(2)},
-          {T(-1), T(2)}}},
-        {T(1) / T(6), T(2) / T(3), T(1) / T(6)},
-        {T(0), T(1) / T(2), T(1)},
-        {},
-        3,
-        {}};
+    static constexpr butcher_tableau<T, 3> table{{{{}, {T(1) / T(2)}, {T(-1), T(2)}}},
+                                                 {T(1) / T(6), T(2) / T(3), T(1) / T(6)},
+                                                 {T(0), T(1) / T(2), T(1)},
+                                                 {},
+                                                 3,
+                                                 {}};
 };
 
 /// Strong-stability-preserving RK3 (Shu & Osher 1988, "Efficient implementation of essentially
@@ -108,15 +77,12 @@ struct kutta3 {
 struct ssprk3 {
     static constexpr const char* name = "SSP RK3 (Shu-Osher)";
     template <class T>
-    static constexpr butcher_tableau<T, 3> table{
-        {{{},
-          {T(1)},
-          {T(1) / T(4), T(1) / T(4)}}},
-        {T(1) / T(6), T(1) / T(6), T(2) / T(3)},
-        {T(0), T(1), T(1) / T(2)},
-        {},
-        3,
-        {}};
+    static constexpr butcher_tableau<T, 3> table{{{{}, {T(1)}, {T(1) / T(4), T(1) / T(4)}}},
+                                                 {T(1) / T(6), T(1) / T(6), T(2) / T(3)},
+                                                 {T(0), T(1), T(1) / T(2)},
+                                                 {},
+                                                 3,
+                                                 {}};
 };
 
 /// Kutta's 3/8 rule (Kutta 1901, Z. Math. Phys. 46, 435-453; Hairer, Norsett & Wanner, Solving ODE I,
@@ -124,16 +90,12 @@ struct ssprk3 {
 struct rk38 {
     static constexpr const char* name = "Kutta 3/8 rule";
     template <class T>
-    static constexpr butcher_tableau<T, 4> table{
-        {{{},
-          {T(1) / T(3)},
-          {T(-1) / T(3), T(1)},
-          {T(1), T(-1), T(1)}}},
-        {T(1) / T(8), T(3) / T(8), T(3) / T(8), T(1) / T(8)},
-        {T(0), T(1) / T(3), T(2) / T(3), T(1)},
-        {},
-        4,
-        {}};
+    static constexpr butcher_tableau<T, 4> table{{{{}, {T(1) / T(3)}, {T(-1) / T(3), T(1)}, {T(1), T(-1), T(1)}}},
+                                                 {T(1) / T(8), T(3) / T(8), T(3) / T(8), T(1) / T(8)},
+                                                 {T(0), T(1) / T(3), T(2) / T(3), T(1)},
+                                                 {},
+                                                 4,
+                                                 {}};
 };
 
 /// Bogacki-Shampine 3(2) pair, FSAL (Bogacki & Shampine 1989, "A 3(2) pair of Runge-Kutta formulas",
@@ -142,10 +104,7 @@ struct bogacki_shampine32 {
     static constexpr const char* name = "Bogacki-Shampine 3(2)";
     template <class T>
     static constexpr butcher_tableau<T, 4, 1> table{
-        {{{},
-          {T(1) / T(2)},
-          {T(0), T(3) / T(4)},
-          {T(2) / T(9), T(1) / T(3), T(4) / T(9)}}},
+        {{{}, {T(1) / T(2)}, {T(0), T(3) / T(4)}, {T(2) / T(9), T(1) / T(3), T(4) / T(9)}}},
         {T(2) / T(9), T(1) / T(3), T(4) / T(9), T(0)},
         {T(0), T(1) / T(2), T(3) / T(4), T(1)},
         {{{T(7) / T(24), T(1) / T(4), T(1) / T(3), T(1) / T(8)}}},
@@ -234,18 +193,18 @@ struct fehlberg78 {
           {T(-25) / T(108), T(0), T(0), T(125) / T(108), T(-65) / T(27), T(125) / T(54)},
           {T(31) / T(300), T(0), T(0), T(0), T(61) / T(225), T(-2) / T(9), T(13) / T(900)},
           {T(2), T(0), T(0), T(-53) / T(6), T(704) / T(45), T(-107) / T(9), T(67) / T(90), T(3)},
-          {T(-91) / T(108), T(0), T(0), T(23) / T(108), T(-976) / T(135), T(311) / T(54), T(-19) / T(60),
-           T(17) / T(6), T(-1) / T(12)},
+          {T(-91) / T(108), T(0), T(0), T(23) / T(108), T(-976) / T(135), T(311) / T(54), T(-19) / T(60), T(17) / T(6),
+           T(-1) / T(12)},
           {T(2383) / T(4100), T(0), T(0), T(-341) / T(164), T(4496) / T(1025), T(-301) / T(82), T(2133) / T(4100),
            T(45) / T(82), T(45) / T(164), T(18) / T(41)},
           {T(3) / T(205), T(0), T(0), T(0), T(0), T(-6) / T(41), T(-3) / T(205), T(-3) / T(41), T(3) / T(41),
            T(6) / T(41), T(0)},
           {T(-1777) / T(4100), T(0), T(0), T(-341) / T(164), T(4496) / T(1025), T(-289) / T(82), T(2193) / T(4100),
            T(51) / T(82), T(33) / T(164), T(12) / T(41), T(0), T(1)}}},
-        {T(0), T(0), T(0), T(0), T(0), T(34) / T(105), T(9) / T(35), T(9) / T(35), T(9) / T(280), T(9) / T(280),
-         T(0), T(41) / T(840), T(41) / T(840)},
-        {T(0), T(2) / T(27), T(1) / T(9), T(1) / T(6), T(5) / T(12), T(1) / T(2), T(5) / T(6), T(1) / T(6),
-         T(2) / T(3), T(1) / T(3), T(1), T(0), T(1)},
+        {T(0), T(0), T(0), T(0), T(0), T(34) / T(105), T(9) / T(35), T(9) / T(35), T(9) / T(280), T(9) / T(280), T(0),
+         T(41) / T(840), T(41) / T(840)},
+        {T(0), T(2) / T(27), T(1) / T(9), T(1) / T(6), T(5) / T(12), T(1) / T(2), T(5) / T(6), T(1) / T(6), T(2) / T(3),
+         T(1) / T(3), T(1), T(0), T(1)},
         {{{T(41) / T(840), T(0), T(0), T(0), T(0), T(34) / T(105), T(9) / T(35), T(9) / T(35), T(9) / T(280),
            T(9) / T(280), T(41) / T(840), T(0), T(0)}}},
         8,
@@ -273,8 +232,8 @@ struct dop853 {
            T(9.24834003261792003115737966543e-1L)},
           {T(3.7037037037037037037037037037e-2L), T(0), T(0), T(1.70828608729473871279604482173e-1L),
            T(1.25467687566822425016691814123e-1L)},
-          {T(3.7109375e-2L), T(0), T(0), T(1.70252211019544039314978060272e-1L),
-           T(6.02165389804559606850219397283e-2L), T(-1.7578125e-2L)},
+          {T(3.7109375e-2L), T(0), T(0), T(1.70252211019544039314978060272e-1L), T(6.02165389804559606850219397283e-2L),
+           T(-1.7578125e-2L)},
           {T(3.70920001185047927108779319836e-2L), T(0), T(0), T(1.70383925712239993810214054705e-1L),
            T(1.07262030446373284651809199168e-1L), T(-1.53194377486244017527936158236e-2L),
            T(8.27378916381402288758473766002e-3L)},
@@ -317,6 +276,7 @@ struct dop853 {
         {5, 3}};
 };
 
+// clang-format on
 }  // namespace odestep::tables
 
 namespace odestep::detail {
@@ -330,6 +290,7 @@ constexpr bool consistent_in_every_type() noexcept {
 }  // namespace odestep::detail
 
 namespace odestep::tables {
+// clang-format off  (the tables keep their published layout)
 
 // Every table is explicit, its nodes are the row sums of a, and every weight vector sums to 1, in each
 // floating type. The full order conditions (rooted trees) are checked by tests/order_conditions_test.cpp.
@@ -350,6 +311,7 @@ static_assert(detail::consistent_in_every_type<fehlberg78>(), "tables::fehlberg7
 // where long double is IEEE quad or double-double (AArch64/RISC-V Linux, PowerPC).
 static_assert(detail::consistent_in_every_type<dop853>(), "tables::dop853 is not consistent");
 
+// clang-format on
 }  // namespace odestep::tables
 
 namespace odestep {

@@ -117,6 +117,7 @@ inline constexpr long double bm_b4 = 1.0L - 2.0L * (bm_b1 + bm_b2 + bm_b3);
 
 /// The splitting tables. Each method is a tag type whose `table<T>` is a constexpr splitting table in T.
 namespace tables {
+// clang-format off  (the tables keep their published layout)
 
 /// Euler-Cromer, symplectic Euler with the kick first (Cromer 1981, "Stable solutions using the Euler
 /// approximation", Am. J. Phys. 49, 455-459; Hairer, Lubich & Wanner, Geometric Numerical Integration
@@ -229,6 +230,7 @@ struct blanes_moan4 {
         true};
 };
 
+// clang-format on
 }  // namespace tables
 
 }  // namespace odestep
