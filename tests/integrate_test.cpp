@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <functional>
 #include <limits>
 
 namespace {
@@ -256,4 +257,45 @@ TEST_CASE("integrate: a huge but finite state whose components sum past the doub
     const auto r = odestep::integrate(stepper, still, y, 0.0, 1.0, 0.5);
     CHECK(r.status == odestep::status::ok);
     CHECK(y[0] == 1.5e308);
+}
+
+TEST_CASE(
+    "integrate: a float run over [0, 1000] at dt = 0.001f takes 10^6 steps, the observer sees 10^6 + 1 "
+    "states and no step is longer than dt, with events as without") {
+    // float(0.001) is 0.0010000000474974513, so 1000 / dt is 999999.95: the old count (a slack of 16 eps times
+    // the quotient) took 999 999 steps and made the last one 2 dt long.
+    using statef = std::array<float, 1>;
+    auto one = [](float, const statef&) { return statef{1.0f}; };
+    struct watcher {
+        std::size_t states = 0;
+        float last_t = 0.0f;
+        float longest = 0.0f;
+        void operator()(float t, const statef&) {
+            if (states > 0 && t - last_t > longest) longest = t - last_t;
+            last_t = t;
+            ++states;
+        }
+    };
+    {
+        statef y{0.0f};
+        watcher w;
+        const auto r = odestep::integrate(odestep::euler<statef>{}, one, y, 0.0f, 1000.0f, 0.001f, std::ref(w));
+        CHECK(r.status == odestep::status::ok);
+        CHECK(r.steps == 1000000);
+        CHECK(w.states == 1000001);
+        CHECK(w.last_t == 1000.0f);
+        CHECK(w.longest <= 0.001f + 2.0f * 6.103515625e-05f);  // dt plus the rounding of two times near 1000
+    }
+    {
+        statef y{0.0f};
+        watcher w;
+        auto never = odestep::make_event<statef>([](float, const statef& s) { return s[0] + 1.0f; },
+                                                 odestep::direction::falling, odestep::record);
+        const auto r = odestep::integrate(odestep::euler<statef>{}, one, y, 0.0f, 1000.0f, 0.001f,
+                                          odestep::watch(never), std::ref(w));
+        CHECK(r.status == odestep::status::ok);
+        CHECK(r.steps == 1000000);
+        CHECK(w.states == 1000001);
+        CHECK(w.longest <= 0.001f + 2.0f * 6.103515625e-05f);
+    }
 }

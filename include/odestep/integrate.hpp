@@ -1,11 +1,11 @@
-// odestep: the fixed-step driving loops.
+// odestep: the fixed-step driving loops, all on one grid clock (detail/grid_clock.hpp).
 #ifndef ODESTEP_INTEGRATE_HPP
 #define ODESTEP_INTEGRATE_HPP
 
 #include <cstddef>
-#include <limits>
 #include <type_traits>
 
+#include "detail/grid_clock.hpp"
 #include "detail/ops.hpp"
 #include "state.hpp"
 #include "status.hpp"
@@ -17,18 +17,26 @@ namespace odestep {
 /// and `steps` the number of steps that completed.
 template <class T>
 struct integrate_result {
-    odestep::status status;
-    T t;
-    std::size_t steps;
+    odestep::status status;  ///< ok, or why the run stopped
+    T t;                     ///< the time of the state
+    step_count steps;        ///< steps completed
 };
+
+/// "No event", in results that name one.
+inline constexpr std::size_t no_event = static_cast<std::size_t>(-1);
 
 namespace detail {
 
-// An event set (events.hpp) is not an observer: integrate's overloads with events are found instead.
+// A set of events (events/) is not an observer: it is recognised by its tag, so this header needs to know
+// nothing of the event loop, which builds on it.
+template <class T, class = void>
+struct has_event_set_tag : std::false_type {};
 template <class T>
-struct is_event_set : std::false_type {};
+struct has_event_set_tag<T, std::void_t<typename T::event_set_tag>> : std::true_type {};
 template <class T>
-inline constexpr bool is_observer_v = !is_event_set<std::remove_cv_t<std::remove_reference_t<T>>>::value;
+inline constexpr bool is_event_set_v = has_event_set_tag<std::remove_cv_t<std::remove_reference_t<T>>>::value;
+template <class T>
+inline constexpr bool is_observer_v = !is_event_set_v<T>;
 
 template <class T>
 struct identity {
@@ -37,96 +45,90 @@ struct identity {
 template <class T>
 using identity_t = typename identity<T>::type;  // keeps t0, t1, dt out of template argument deduction
 
+template <class State>
+using time_t_of = identity_t<value_type_t<State>>;
+
 struct no_observer {
     template <class T, class... States>
     constexpr void operator()(T, const States&...) const noexcept {}
 };
 
-/// Checks the arguments of a fixed-step run over [t0, t1] and counts its steps: ceil((t1 - t0) / dt),
-/// except that a quotient within a few rounding errors of a whole number n gives n steps, not n plus a
-/// sliver of a few ULPs (0.3 / 0.1 is 2.9999999999999996 in double).
+/// What one step of a driving loop ends in: the status, the time of the state (the step's end, or where
+/// it stopped), and for the event loop the firings inside the step and the event that stopped it.
 template <class T>
-constexpr status plan_steps(T t0, T t1, T dt, std::size_t& steps) noexcept {
-    if (!is_finite(t0) || !is_finite(t1) || !is_finite(t1 - t0)) return status::invalid_time;
-    if (!is_finite(dt) || dt == T(0)) return status::invalid_step;
-    const T span = t1 - t0;
-    if (span == T(0)) {
-        steps = 0;
-        return status::ok;
+struct step_outcome {
+    status code;
+    T t;
+    std::size_t fired;
+    std::size_t event;
+};
+
+/// What the loop ends in: as integrate_result, and the event that stopped it (or no_event).
+template <class T>
+struct run_outcome {
+    status code;
+    T t;
+    step_count steps;
+    std::size_t event;
+};
+
+/// THE fixed-step loop. `advance(t, h, t_next)` takes one step of h from the state at t to the grid time
+/// t_next and returns its step_outcome; the observer sees the initial state, every completed step, and
+/// the state where a terminal event stopped the run.
+template <class T, class Advance, class Observer, class... States>
+run_outcome<T> run_grid(const grid_plan<T>& plan, Advance&& advance, Observer& observe, States&... ys) {
+    observe(plan.clock.t0, static_cast<const States&>(ys)...);
+    T t = plan.clock.t0;
+    for (step_count i = 0; i < plan.steps; ++i) {
+        const T next = plan.end_of(i);
+        const step_outcome<T> a = advance(t, plan.step_size(i), next);
+        if (a.code != status::ok) {
+            if (a.code == status::stopped_by_event) observe(a.t, static_cast<const States&>(ys)...);
+            return {a.code, a.t, i, a.event};
+        }
+        observe(next, static_cast<const States&>(ys)...);
+        t = next;
     }
-    const T ratio = span / dt;
-    if (ratio < T(0)) return status::wrong_direction;
-    constexpr std::size_t most = std::numeric_limits<std::size_t>::max() / 2;
-    if (!(ratio < static_cast<T>(most))) return status::too_many_steps;
-    const std::size_t whole = static_cast<std::size_t>(ratio);  // floor, as ratio > 0
-    const T fraction = ratio - static_cast<T>(whole);
-    const T tolerance = T(16) * std::numeric_limits<T>::epsilon() * ratio;
-    // Just above a whole number: that many steps. Otherwise one more, the last one shortened to end on t1
-    // (just below a whole number, that last step differs from dt by a few ULPs only).
-    steps = (whole > 0 && fraction <= tolerance) ? whole : whole + 1;
+    return {status::ok, plan.t_end, plan.steps, no_event};
+}
+
+/// A stepper that needs every step to be dt (uniform_steps) cannot take a plan's shortened last step:
+/// status::step_mismatch, before anything is touched.
+template <class Stepper, class T>
+constexpr status fits_plan(const grid_plan<T>& plan) noexcept {
+    if constexpr (std::remove_reference_t<Stepper>::uniform_steps) {
+        if (plan.uneven_last()) return status::step_mismatch;
+    }
+    (void)plan;
     return status::ok;
 }
 
-}  // namespace detail
-
-namespace detail {
-
-// The last step of a run over [t0, t1]: t1 - t, except that a difference from dt within the rounding of the
-// grid's times is rounding, not a shorter step, and the step is dt exactly (0.3 - 0.2 is not 0.1 in double;
-// a multistep method would take it for a new step size).
-template <class T>
-constexpr T last_step(T t0, T t1, T t, T dt) noexcept {
-    const T h = t1 - t;
-    const T grid = T(4) * std::numeric_limits<T>::epsilon() * (abs_value(t0) + abs_value(t1));
-    return abs_value(h - dt) <= grid ? dt : h;
-}
-
-// The one fixed-step loop, for a first-order state (y) or a Newtonian pair (x, v): the stepper is called
-// as step(f, states..., t, h) and the observer as observe(t, states...).
-template <class T, class Stepper, class System, class Observer, class... States>
-integrate_result<T> drive(Stepper& stepper, System& f, Observer& observe, T t0, T t1, T dt, States&... ys) {
-    std::size_t n = 0;
-    const status valid = plan_steps(t0, t1, dt, n);
-    if (valid != status::ok) return {valid, t0, 0};
-    observe(t0, static_cast<const States&>(ys)...);
-    T t = t0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const bool last = i + 1 == n;
-        // t_i = t0 + i dt from the counter, never a running sum (in float, a running t += 1e-3 reaches
-        // 991.14 instead of 1000 after 10^6 steps); the last step is shortened to end on t1.
-        const T next = last ? t1 : t0 + static_cast<T>(i + 1) * dt;
-        const status s = stepper.step(f, ys..., t, last ? last_step(t0, t1, t, dt) : dt);
-        if (s != status::ok) return {s, t, i};
-        observe(next, static_cast<const States&>(ys)...);
-        t = next;
+// integrate and integrate_n_steps for a first-order state (y) or a Newtonian pair (x, v): the stepper is
+// called as step(f, states..., t, h) and the observer as observe(t, states...).
+template <system_form Form, class T, class Stepper, class System, class Observer, class... States>
+integrate_result<T> drive(Stepper& stepper, System& f, Observer& observe, status planned, const grid_plan<T>& plan,
+                          States&... ys) {
+    if constexpr (!stepper_fits<Stepper, Form>()) {
+        return {status::invalid_step, plan.clock.t0, 0};  // not reached: stepper_fits stopped the compilation
+    } else {
+        if (planned == status::ok) planned = fits_plan<Stepper>(plan);
+        if (planned != status::ok) return {planned, plan.clock.t0, 0};
+        const run_outcome<T> r = run_grid(
+            plan,
+            [&](T t, T h, T) {
+                return step_outcome<T>{stepper.step(f, ys..., t, h), t, 0, no_event};
+            },
+            observe, ys...);
+        return {r.code, r.t, r.steps};
     }
-    return {status::ok, t1, n};
 }
-
-template <class T, class Stepper, class System, class Observer, class... States>
-integrate_result<T> drive_n(Stepper& stepper, System& f, Observer& observe, T t0, T dt, std::size_t steps,
-                            States&... ys) {
-    if (!is_finite(t0)) return {status::invalid_time, t0, 0};
-    if (!is_finite(dt) || dt == T(0)) return {status::invalid_step, t0, 0};
-    observe(t0, static_cast<const States&>(ys)...);
-    T t = t0;
-    for (std::size_t i = 0; i < steps; ++i) {
-        const T next = t0 + static_cast<T>(i + 1) * dt;  // from the counter, as in drive
-        const status s = stepper.step(f, ys..., t, dt);
-        if (s != status::ok) return {s, t, i};
-        observe(next, static_cast<const States&>(ys)...);
-        t = next;
-    }
-    return {status::ok, t, steps};
-}
-
-template <class State>
-using time_t_of = identity_t<value_type_t<State>>;
 
 }  // namespace detail
 
 /// Integrates y' = f(t, y) from t0 to exactly t1 with steps of dt (negative dt integrates backwards). The
-/// step times are t0 + i dt from an integer counter; the last step is shortened to end on t1. The observer
+/// step times are t0 + i dt from an integer counter; the last step ends on t1, shortened when t1 - t0 is
+/// not a whole number of steps (to the grid's rounding). A stepper that needs equal steps (uniform_steps:
+/// Adams, Boris) refuses a run whose last step would be shortened, with status::step_mismatch. The observer
 /// is called as observe(t, y) with the initial state and after every step.
 ///
 /// Bad arguments return a status before anything is touched. A step that produces NaN or Inf is rolled
@@ -136,7 +138,9 @@ template <class Stepper, class System, class State, class Observer,
 [[nodiscard]] integrate_result<value_type_t<State>> integrate(Stepper&& stepper, System&& f, State& y,
                                                               detail::time_t_of<State> t0, detail::time_t_of<State> t1,
                                                               detail::time_t_of<State> dt, Observer&& observe) {
-    return detail::drive(stepper, f, observe, t0, t1, dt, y);
+    detail::grid_plan<value_type_t<State>> plan;
+    const status planned = detail::plan_run(t0, t1, dt, plan);
+    return detail::drive<system_form::first_order>(stepper, f, observe, planned, plan, y);
 }
 
 /// integrate without an observer.
@@ -145,59 +149,69 @@ template <class Stepper, class System, class State>
                                                               detail::time_t_of<State> t0, detail::time_t_of<State> t1,
                                                               detail::time_t_of<State> dt) {
     detail::no_observer none;
-    return detail::drive(stepper, f, none, t0, t1, dt, y);
+    return integrate(stepper, f, y, t0, t1, dt, none);
 }
 
-/// Takes exactly `steps` steps of dt from t0 (so it ends at t0 + steps * dt), observing as `integrate`.
+/// Takes exactly `steps` steps of dt from t0 (so it ends at t0 + steps * dt), observing as `integrate`. A
+/// run whose last time t0 + steps * dt is not finite is refused with status::invalid_time.
 template <class Stepper, class System, class State, class Observer>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(Stepper&& stepper, System&& f, State& y,
                                                                       detail::time_t_of<State> t0,
-                                                                      detail::time_t_of<State> dt, std::size_t steps,
+                                                                      detail::time_t_of<State> dt, step_count steps,
                                                                       Observer&& observe) {
-    return detail::drive_n(stepper, f, observe, t0, dt, steps, y);
+    detail::grid_plan<value_type_t<State>> plan;
+    const status planned = detail::plan_steps(t0, dt, steps, plan);
+    return detail::drive<system_form::first_order>(stepper, f, observe, planned, plan, y);
 }
 
 /// integrate_n_steps without an observer.
 template <class Stepper, class System, class State>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(Stepper&& stepper, System&& f, State& y,
                                                                       detail::time_t_of<State> t0,
-                                                                      detail::time_t_of<State> dt, std::size_t steps) {
+                                                                      detail::time_t_of<State> dt, step_count steps) {
     detail::no_observer none;
-    return detail::drive_n(stepper, f, none, t0, dt, steps, y);
+    return integrate_n_steps(stepper, f, y, t0, dt, steps, none);
 }
 
-/// Newton's equations x'' = a: the same loops for steppers that take position and velocity separately.
-/// The observer is called as observe(t, x, v).
+/// Newton's equations x'' = a (and the charged particle's fields): the same loops for steppers that take
+/// position and velocity separately. The observer is called as observe(t, x, v).
 template <class Stepper, class Accel, class State, class Observer,
           std::enable_if_t<detail::is_observer_v<Observer>, int> = 0>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate(Stepper&& stepper, Accel&& a, State& x, State& v,
                                                               detail::time_t_of<State> t0, detail::time_t_of<State> t1,
                                                               detail::time_t_of<State> dt, Observer&& observe) {
-    return detail::drive(stepper, a, observe, t0, t1, dt, x, v);
+    detail::grid_plan<value_type_t<State>> plan;
+    const status planned = detail::plan_run(t0, t1, dt, plan);
+    return detail::drive<system_form::newtonian>(stepper, a, observe, planned, plan, x, v);
 }
 
+/// integrate for Newton's equations, without an observer.
 template <class Stepper, class Accel, class State>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate(Stepper&& stepper, Accel&& a, State& x, State& v,
                                                               detail::time_t_of<State> t0, detail::time_t_of<State> t1,
                                                               detail::time_t_of<State> dt) {
     detail::no_observer none;
-    return detail::drive(stepper, a, none, t0, t1, dt, x, v);
+    return integrate(stepper, a, x, v, t0, t1, dt, none);
 }
 
+/// integrate_n_steps for Newton's equations.
 template <class Stepper, class Accel, class State, class Observer>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(Stepper&& stepper, Accel&& a, State& x, State& v,
                                                                       detail::time_t_of<State> t0,
-                                                                      detail::time_t_of<State> dt, std::size_t steps,
+                                                                      detail::time_t_of<State> dt, step_count steps,
                                                                       Observer&& observe) {
-    return detail::drive_n(stepper, a, observe, t0, dt, steps, x, v);
+    detail::grid_plan<value_type_t<State>> plan;
+    const status planned = detail::plan_steps(t0, dt, steps, plan);
+    return detail::drive<system_form::newtonian>(stepper, a, observe, planned, plan, x, v);
 }
 
+/// integrate_n_steps for Newton's equations, without an observer.
 template <class Stepper, class Accel, class State>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate_n_steps(Stepper&& stepper, Accel&& a, State& x, State& v,
                                                                       detail::time_t_of<State> t0,
-                                                                      detail::time_t_of<State> dt, std::size_t steps) {
+                                                                      detail::time_t_of<State> dt, step_count steps) {
     detail::no_observer none;
-    return detail::drive_n(stepper, a, none, t0, dt, steps, x, v);
+    return integrate_n_steps(stepper, a, x, v, t0, dt, steps, none);
 }
 
 }  // namespace odestep

@@ -566,13 +566,13 @@ TEST_CASE("events: the tick counter has 64 bits on every target, and its time co
     static_assert(std::is_same_v<decltype(std::declval<const loop_type&>().ticks()), std::uint64_t>);
     // The split conversion (a 32-bit target's) against integers exact in double: below 2^32 the low half's,
     // above it hi 2^32 + lo.
-    CHECK(odestep::detail::tick_count_halves<double>(4294967295u) == 4294967295.0);
-    CHECK(odestep::detail::tick_count_halves<double>((std::uint64_t{1} << 32) + 5) == 4294967301.0);
-    CHECK(odestep::detail::tick_count_halves<double>((std::uint64_t{3} << 40) + 7) == 3298534883335.0);
-    CHECK(odestep::detail::tick_count_value<double>((std::uint64_t{3} << 40) + 7) == 3298534883335.0);
+    CHECK(odestep::detail::count_halves<double>(4294967295u) == 4294967295.0);
+    CHECK(odestep::detail::count_halves<double>((std::uint64_t{1} << 32) + 5) == 4294967301.0);
+    CHECK(odestep::detail::count_halves<double>((std::uint64_t{3} << 40) + 7) == 3298534883335.0);
+    CHECK(odestep::detail::count_value<double>((std::uint64_t{3} << 40) + 7) == 3298534883335.0);
     // float: 2^33 + 1 is not a float; its nearest is 2^33.
-    CHECK(odestep::detail::tick_count_halves<float>((std::uint64_t{1} << 33) + 1) == 8589934592.0f);
-    CHECK(odestep::detail::tick_count_halves<float>(16777217u) == static_cast<float>(16777217u));
+    CHECK(odestep::detail::count_halves<float>((std::uint64_t{1} << 33) + 1) == 8589934592.0f);
+    CHECK(odestep::detail::count_halves<float>(16777217u) == static_cast<float>(16777217u));
 }
 
 TEST_CASE("events: the published bound on right-hand-side evaluations per step holds in the worst case") {

@@ -117,6 +117,7 @@ using default_root_finder = brent;
 template <class Finder, class... Events>
 struct event_set {
     static_assert(sizeof...(Events) > 0, "odestep: an event set needs at least one event");
+    using event_set_tag = void;  ///< marks an event set for the driving loops (integrate's overloads)
     using finder = Finder;
     static constexpr std::size_t size = sizeof...(Events);
 
@@ -137,13 +138,7 @@ constexpr event_set<Finder, Events...> watch(Events... e) {
     return event_set<Finder, Events...>{std::tuple<Events...>(e...), event_limits{}};
 }
 
-/// "No event", in results that name one.
-inline constexpr std::size_t no_event = static_cast<std::size_t>(-1);
-
 namespace detail {
-template <class Finder, class... Events>
-struct is_event_set<event_set<Finder, Events...>> : std::true_type {};
-
 // The root finder's cap: the user's, or else the finder's own worst case from a bracket of dt down to the
 // default tolerance (at least 4 eps dt): enough for it always to converge.
 template <class T, class Finder>
@@ -193,7 +188,7 @@ template <class T, std::size_t E>
 struct event_integrate_result {
     odestep::status status;
     T t;
-    std::size_t steps;                   ///< grid steps completed
+    step_count steps;                    ///< grid steps completed
     std::size_t event;                   ///< the terminal event, or no_event
     std::size_t fired;                   ///< firings in total
     std::array<std::size_t, E> firings;  ///< firings per event
@@ -278,16 +273,6 @@ constexpr event_result call_action(Action& action, T t, const std::array<State*,
     }
 }
 
-// What one step with events ends in: the status, the time of the state, the firings inside the step and the
-// event that stopped it (or no_event).
-template <class T>
-struct advance_result {
-    status code;
-    T t;
-    std::size_t fired;
-    std::size_t event;
-};
-
 // The event loop's state and its one step with events; integrate with events and event_stepper both use it.
 // K is the number of state objects (1: y; 2: x and v).
 template <class State, std::size_t K, class Set>
@@ -337,7 +322,7 @@ public:
     // every event it contains located, fired and acted on; the result's t is the time of y. sink(k, i, t) is
     // told the k-th firing inside the step (k from 0): event i at t.
     template <class Stepper, class System, class Sink>
-    advance_result<T> advance(Stepper& stepper, System& f, set_type& set, refs y, T t_s, T h, T t_end, Sink sink) {
+    step_outcome<T> advance(Stepper& stepper, System& f, set_type& set, refs y, T t_s, T h, T t_end, Sink sink) {
         pack start;
         const status s = step(stepper, f, y, t_s, h, start);
         if (ODESTEP_UNLIKELY(s != status::ok)) return {s, t_s, 0, no_event};
@@ -375,8 +360,8 @@ public:
     // crossing inside the step located, fired and acted on; after an action that changed the state, the rest
     // of the step again from the event.
     template <class Stepper, class System, class Sink>
-    ODESTEP_EVENTS_NOINLINE advance_result<T> advance_rest(Stepper& stepper, System& f, set_type& set, refs y,
-                                                           pack& start, values g_end, T t_s, T h, T t_end, Sink sink) {
+    ODESTEP_EVENTS_NOINLINE step_outcome<T> advance_rest(Stepper& stepper, System& f, set_type& set, refs y,
+                                                         pack& start, values g_end, T t_s, T h, T t_end, Sink sink) {
         status s = status::ok;
         std::size_t fired_here = 0;
         bool partial = false;
@@ -585,7 +570,7 @@ private:
         return all_finite(a);
     }
     // Back to the last good state, at t_good.
-    static advance_result<T> fail(const refs& y, const pack& good, T t_good, status s, std::size_t fired) {
+    static step_outcome<T> fail(const refs& y, const pack& good, T t_good, status s, std::size_t fired) {
         store(y, good);
         return {s, t_good, fired, no_event};
     }
@@ -766,27 +751,6 @@ private:
     }
 };
 
-// A tick count as T, for t0 + n dt. Where std::size_t has 64 bits this is the one conversion. On a 32-bit
-// target a 64-bit integer to floating-point conversion is a library call, so the count is converted as two
-// 32-bit halves: while the high half is zero (the first 2^32 ticks) the result is the low half's hardware
-// conversion, the same as a 32-bit count's; after, hi 2^32 + lo, within one rounding of the exact value.
-template <class T>
-ODESTEP_INLINE constexpr T tick_count_halves(std::uint64_t n) noexcept {
-    const auto lo = static_cast<std::uint32_t>(n);
-    const auto hi = static_cast<std::uint32_t>(n >> 32);
-    if (ODESTEP_UNLIKELY(hi != 0)) return static_cast<T>(hi) * T(4294967296.0L) + static_cast<T>(lo);  // 2^32
-    return static_cast<T>(lo);
-}
-
-template <class T>
-ODESTEP_INLINE constexpr T tick_count_value(std::uint64_t n) noexcept {
-    if constexpr (sizeof(std::size_t) >= sizeof(std::uint64_t)) {
-        return static_cast<T>(n);
-    } else {
-        return tick_count_halves<T>(n);
-    }
-}
-
 struct no_sink {
     template <class T>
     constexpr void operator()(std::size_t, std::size_t, T) const noexcept {}
@@ -814,51 +778,31 @@ constexpr void require_self_starting() noexcept {
 }
 
 template <class T, class Stepper, class System, class Set, class Observer, class State, class... More>
-event_integrate_result<T, Set::size> drive_events(Stepper& stepper, System& f, Set& set, Observer& observe, T t0, T t1,
-                                                  T dt, State& y0, More&... ys) {
+event_integrate_result<T, Set::size> drive_events(Stepper& stepper, System& f, Set& set, Observer& observe,
+                                                  status planned, const grid_plan<T>& plan, State& y0, More&... ys) {
     require_self_starting<Stepper>();
     constexpr std::size_t K = 1 + sizeof...(More);
     using engine_type = event_engine<State, K, Set>;
-    event_integrate_result<T, Set::size> r{status::ok, t0, 0, no_event, 0, {}};
-    const auto finish = [&](status s, T t, std::size_t steps, const engine_type& engine) {
-        r.status = s;
-        r.t = t;
-        r.steps = steps;
+    engine_type engine;
+    const auto finish = [&](status s, T t, step_count steps, std::size_t event) {
+        event_integrate_result<T, Set::size> r{s, t, steps, event, 0, {}};
         for (std::size_t i = 0; i < Set::size; ++i) {
             r.firings[i] = engine.memory[i].fired;
             r.fired += engine.memory[i].fired;
         }
         return r;
     };
-    engine_type engine;
-    std::size_t n = 0;
-    const status valid = plan_steps(t0, t1, dt, n);
-    if (valid != status::ok) return finish(valid, t0, 0, engine);
+    if (planned == status::ok) planned = fits_plan<Stepper>(plan);
+    if (planned != status::ok) return finish(planned, plan.clock.t0, 0, no_event);
     const std::array<State*, K> y{&y0, &ys...};
-    const status started = engine.begin(set, t0, y);
-    if (started != status::ok) return finish(started, t0, 0, engine);
-    observe(t0, static_cast<const State&>(y0), static_cast<const More&>(ys)...);
-    T t = t0;
+    const status started = engine.begin(set, plan.clock.t0, y);
+    if (started != status::ok) return finish(started, plan.clock.t0, 0, no_event);
     no_sink sink;
-    for (std::size_t i = 0; i < n; ++i) {
-        const bool last = i + 1 == n;
-        const T next = last ? t1 : t0 + static_cast<T>(i + 1) * dt;  // from the counter, as in drive
-        const advance_result<T> a =
-            engine.advance(stepper, f, set, y, t, last ? last_step(t0, t1, t, dt) : dt, next, sink);
-        if (a.code != status::ok) {
-            r.event = a.event;
-            if (a.code == status::stopped_by_event)
-                observe(a.t, static_cast<const State&>(y0), static_cast<const More&>(ys)...);
-            return finish(a.code, a.t, i, engine);
-        }
-        observe(next, static_cast<const State&>(y0), static_cast<const More&>(ys)...);
-        t = next;
-    }
-    return finish(status::ok, t1, n, engine);
+    const run_outcome<T> r = run_grid(
+        plan, [&](T t, T h, T next) { return engine.advance(stepper, f, set, y, t, h, next, sink); }, observe, y0,
+        ys...);
+    return finish(r.code, r.t, r.steps, r.event);
 }
-
-template <class Set>
-using event_set_t = std::remove_cv_t<std::remove_reference_t<Set>>;
 
 }  // namespace detail
 
@@ -873,37 +817,39 @@ using event_set_t = std::remove_cv_t<std::remove_reference_t<Set>>;
 /// (its history, or a kept acceleration, belongs to the old state). An event that does not change the state
 /// leaves the trajectory exactly as it would be without it.
 template <class Stepper, class System, class State, class Set, class Observer,
-          std::enable_if_t<detail::is_event_set<detail::event_set_t<Set>>::value, int> = 0>
+          std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
 [[nodiscard]] auto integrate(Stepper&& stepper, System&& f, State& y, detail::time_t_of<State> t0,
                              detail::time_t_of<State> t1, detail::time_t_of<State> dt, Set&& events,
                              Observer&& observe) {
-    return detail::drive_events(stepper, f, events, observe, t0, t1, dt, y);
+    detail::grid_plan<value_type_t<State>> plan;
+    const status planned = detail::plan_run(t0, t1, dt, plan);
+    return detail::drive_events(stepper, f, events, observe, planned, plan, y);
 }
 
 /// integrate with events, without an observer.
-template <class Stepper, class System, class State, class Set,
-          std::enable_if_t<detail::is_event_set<detail::event_set_t<Set>>::value, int> = 0>
+template <class Stepper, class System, class State, class Set, std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
 [[nodiscard]] auto integrate(Stepper&& stepper, System&& f, State& y, detail::time_t_of<State> t0,
                              detail::time_t_of<State> t1, detail::time_t_of<State> dt, Set&& events) {
     detail::no_observer none;
-    return detail::drive_events(stepper, f, events, none, t0, t1, dt, y);
+    return integrate(stepper, f, y, t0, t1, dt, events, none);
 }
 
 /// Newton's equations with events: g(t, x, v), action(t, x, v), observe(t, x, v).
 template <class Stepper, class Accel, class State, class Set, class Observer,
-          std::enable_if_t<detail::is_event_set<detail::event_set_t<Set>>::value, int> = 0>
+          std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
 [[nodiscard]] auto integrate(Stepper&& stepper, Accel&& a, State& x, State& v, detail::time_t_of<State> t0,
                              detail::time_t_of<State> t1, detail::time_t_of<State> dt, Set&& events,
                              Observer&& observe) {
-    return detail::drive_events(stepper, a, events, observe, t0, t1, dt, x, v);
+    detail::grid_plan<value_type_t<State>> plan;
+    const status planned = detail::plan_run(t0, t1, dt, plan);
+    return detail::drive_events(stepper, a, events, observe, planned, plan, x, v);
 }
 
-template <class Stepper, class Accel, class State, class Set,
-          std::enable_if_t<detail::is_event_set<detail::event_set_t<Set>>::value, int> = 0>
+template <class Stepper, class Accel, class State, class Set, std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
 [[nodiscard]] auto integrate(Stepper&& stepper, Accel&& a, State& x, State& v, detail::time_t_of<State> t0,
                              detail::time_t_of<State> t1, detail::time_t_of<State> dt, Set&& events) {
     detail::no_observer none;
-    return detail::drive_events(stepper, a, events, none, t0, t1, dt, x, v);
+    return integrate(stepper, a, x, v, t0, t1, dt, events, none);
 }
 
 /// The event loop for a control loop: one `tick` advances exactly one dt, from t0 + n dt to t0 + (n+1) dt
@@ -937,17 +883,17 @@ public:
     template <class... States>
     [[nodiscard]] status start(value_type t0, value_type dt, const States&... y) {
         static_assert(sizeof...(States) == arity, "odestep: start(t0, dt, y) (Newtonian: start(t0, dt, x, v))");
-        if (!detail::is_finite(t0)) return status::invalid_time;
-        if (!detail::is_finite(dt) || dt == value_type(0)) return status::invalid_step;
+        const detail::grid_clock<value_type> clock{t0, dt};
+        const status checked = clock.check();
+        if (checked != status::ok) return checked;
         const std::array<const state_type*, arity> ptrs{&y...};
         const status s = engine_.begin(set_, t0, ptrs);
         if (s != status::ok) return s;
         detail::reset_if_any(stepper_);
-        t0_ = t0;
-        dt_ = dt;
+        clock_ = clock;
         n_ = 0;
-        t_now_ = t0_ + detail::tick_count_value<value_type>(n_) * dt_;  // t0 + 0 dt, as every grid time
-        clock_ = clock_state::on_grid;
+        t_now_ = clock_.time(0);  // t0 + 0 dt, as every grid time
+        clock_state_ = clock_state::on_grid;
         return status::ok;
     }
 
@@ -958,7 +904,7 @@ public:
     template <class... States>
     [[nodiscard]] status rearm(const States&... y) {
         static_assert(sizeof...(States) == arity, "odestep: rearm(y) (Newtonian: rearm(x, v))");
-        if (clock_ == clock_state::idle) return status::invalid_time;
+        if (clock_state_ == clock_state::idle) return status::invalid_time;
         const std::array<const state_type*, arity> ptrs{&y...};
         const status s = engine_.reread(set_, time(), ptrs);
         if (s != status::ok) return s;
@@ -980,9 +926,9 @@ public:
         r.event = no_event;
         // The time of the state (t_now_) is the last tick's end, or where a tick stopped; the tick's end is
         // converted from the counter after the step (on the grid nothing is kept across the step's call).
-        T h = dt_;
-        if (ODESTEP_UNLIKELY(clock_ != clock_state::on_grid)) {
-            if (clock_ == clock_state::idle) {
+        T h = clock_.dt;
+        if (ODESTEP_UNLIKELY(clock_state_ != clock_state::on_grid)) {
+            if (clock_state_ == clock_state::idle) {
                 r.status = status::invalid_time;
                 return r;
             }
@@ -990,7 +936,7 @@ public:
             h = t_end - t_now_;  // off the grid: back to it
             if (h == T(0)) {     // an earlier tick stopped on this grid time
                 ++n_;
-                clock_ = clock_state::on_grid;
+                clock_state_ = clock_state::on_grid;
                 t_now_ = t_end;
                 r.t = t_end;
                 return r;
@@ -1009,8 +955,8 @@ public:
                 if (k < Capacity) firings_[k] = event_firing<T>{i, t};
             };
             const T t_start = t_now_;
-            h = clock_ == clock_state::on_grid ? dt_ : t_end - t_start;  // as above
-            const detail::advance_result<T> a =
+            h = clock_state_ == clock_state::on_grid ? clock_.dt : t_end - t_start;  // as above
+            const detail::step_outcome<T> a =
                 engine_.advance_rest(stepper_, f, set_, ptrs, start, g, t_start, h, t_end, sink);
             r.status = a.code;
             r.t = a.t;
@@ -1020,14 +966,14 @@ public:
             t_now_ = a.t;
             if (a.code == status::ok) {
                 ++n_;
-                clock_ = clock_state::on_grid;
+                clock_state_ = clock_state::on_grid;
             } else if (!(a.t == t_start)) {
-                clock_ = clock_state::off_grid;
+                clock_state_ = clock_state::off_grid;
             }
             return r;
         }
         ++n_;
-        clock_ = clock_state::on_grid;
+        clock_state_ = clock_state::on_grid;
         t_now_ = t_end;
         r.t = t_end;
         return r;
@@ -1044,7 +990,7 @@ public:
 
 private:
     // The end of the tick being taken, t0 + (n+1) dt, from the counter.
-    value_type grid_time() const noexcept { return t0_ + detail::tick_count_value<value_type>(n_ + 1) * dt_; }
+    value_type grid_time() const noexcept { return clock_.time(n_ + 1); }
 
     // idle: before start; on_grid: the state is at t0 + n dt; off_grid: a tick stopped between grid times.
     enum class clock_state : unsigned char { idle, on_grid, off_grid };
@@ -1053,11 +999,10 @@ private:
     Set set_;
     using engine_type = detail::event_engine<state_type, arity, Set>;
     engine_type engine_{};
-    value_type t0_ = value_type(0);
-    value_type dt_ = value_type(0);
+    detail::grid_clock<value_type> clock_{};
     value_type t_now_ = value_type(0);  // the time of the state: t0 + n dt computed at the last tick's end
     std::uint64_t n_ = 0;               // 64 bits on every target: a 32-bit count wraps after 49.7 days of 1 kHz ticks
-    clock_state clock_ = clock_state::idle;
+    clock_state clock_state_ = clock_state::idle;
     // The firings of a tick that had some (its first Capacity), copied into its tick_result.
     std::array<event_firing<value_type>, Capacity> firings_{};
 };

@@ -117,7 +117,6 @@ public:
     static constexpr bool volume_preserving = true;
     static constexpr bool time_reversible = true;
     static constexpr bool self_starting = false;  // v must be staggered first
-    static constexpr bool uniform_steps = true;   // v is staggered by dt / 2
     static constexpr system_form system = system_form::charged_particle;
 
     /// q/m = 1.
@@ -211,7 +210,6 @@ public:
     static constexpr bool volume_preserving = true;
     static constexpr bool time_reversible = true;
     static constexpr bool self_starting = false;  // u must be staggered first
-    static constexpr bool uniform_steps = true;   // v is staggered by dt / 2
     static constexpr system_form system = system_form::charged_particle;
 
     /// q/m = 1 and c = 1.
