@@ -106,14 +106,17 @@ ODESTEP_DETAIL_HAS_MEMBER(implicit)
 template <class S, class = void>
 struct has_state_type : std::false_type {};
 template <class S>
-struct has_state_type<S, std::void_t<typename S::state_type, typename S::value_type>>
-    : std::bool_constant<is_state_v<typename S::state_type> &&
-                         std::is_same_v<typename S::value_type, value_type_t<typename S::state_type>>> {};
+struct has_state_type<S, std::void_t<typename S::state_type, typename S::value_type>> : std::true_type {};
 
 // Which requirement a stepper type misses first (0: none). The codes are diagnose()'s.
 template <class S>
 constexpr int first_missing_trait() noexcept {
     if constexpr (!has_state_type<S>::value)
+        return 1;
+    else if constexpr (!is_state_v<typename S::state_type>)
+        return 18;
+    else if constexpr (!std::is_same_v<typename S::value_type,
+                                       typename state_traits<typename S::state_type>::value_type>)
         return 1;
     else if constexpr (!has_order<S>::value)
         return 2;
@@ -154,6 +157,8 @@ constexpr int first_missing_trait() noexcept {
 template <class S>
 constexpr bool diagnose() noexcept {
     constexpr int code = first_missing_trait<S>();
+    // 18: the state is not a std::array<T, N>; state_traits says so, in one line.
+    if constexpr (code == 18) return sizeof(state_traits<typename S::state_type>) == 0;
     static_assert(code != 1,
                   "odestep: a stepper needs `using state_type = std::array<T, N>;` and `using value_type = T;`");
     static_assert(

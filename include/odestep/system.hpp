@@ -113,9 +113,13 @@ constexpr State acceleration(Accel& a, T t, const State& x, const State& v) {
 // a(t, x) for the methods that need a force of position alone.
 template <class Accel, class State, class T>
 constexpr State acceleration(Accel& a, T t, const State& x) {
-    static_assert(is_position_force_v<Accel, State, T>,
-                  "odestep: this method needs a force of position alone, written `State a(T t, const State& x)`");
-    return a(t, x);
+    if constexpr (is_position_force_v<Accel, State, T>) {
+        return a(t, x);
+    } else {
+        static_assert(is_position_force_v<Accel, State, T>,
+                      "odestep: this method needs a force of position alone, written `State a(T t, const State& x)`");
+        return x;
+    }
 }
 
 }  // namespace detail

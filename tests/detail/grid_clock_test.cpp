@@ -68,8 +68,9 @@ TEST_CASE("grid clock: t1 half a step past the grid gets a shortened last step, 
     CHECK(p.h_last > 0.4f * 0.001f);
 }
 
-TEST_CASE("grid clock: random runs in float and double take the independently computed count, no step longer "
-          "than dt beyond the grid's rounding and no sliver") {
+TEST_CASE(
+    "grid clock: random runs in float and double take the independently computed count, no step longer "
+    "than dt beyond the grid's rounding and no sliver") {
     lcg rng{12345};
     auto check_type = [&](auto zero) {
         using T = decltype(zero);
@@ -83,9 +84,9 @@ TEST_CASE("grid clock: random runs in float and double take the independently co
             const bool on_grid = rng.next() < 0.5;
             const T t1 = on_grid ? static_cast<T>(t0 + static_cast<T>(n) * dt)
                                  : static_cast<T>(t0 + (static_cast<T>(n) - static_cast<T>(rng.next())) * dt);
-            const long double rounding = 2.0L * static_cast<long double>(std::numeric_limits<T>::epsilon()) *
-                                         (std::fabs(static_cast<long double>(t0)) +
-                                          std::fabs(static_cast<long double>(t1)));
+            const long double rounding =
+                2.0L * static_cast<long double>(std::numeric_limits<T>::epsilon()) *
+                (std::fabs(static_cast<long double>(t0)) + std::fabs(static_cast<long double>(t1)));
             // (where dt is within a few dozen roundings the grid cannot tell a step from a sliver)
             if (t1 == t0 || std::fabs(static_cast<long double>(dt)) < 64.0L * rounding) continue;
             const auto p = plan_of(t0, t1, dt);

@@ -226,13 +226,14 @@ private:
     detail::continuation<State> next_{};
 };
 
-/// Beeman's algorithm for a force of position alone:
+/// Beeman's algorithm (Beeman 1976):
 ///   x_{n+1} = x_n + v_n dt + (4 a_n - a_{n-1}) dt^2 / 6,
 ///   v_{n+1} = v_n + (2 a_{n+1} + 5 a_n - a_{n-1}) dt / 6,
 /// self-started by one velocity Verlet step (x_1 = x_0 + v_0 dt + a_0 dt^2/2, v_1 = v_0 + (a_0 + a_1) dt/2).
-/// a_{n+1} is kept for the next step: one evaluation per step (two on the first).
+/// a_{n+1} is kept for the next step: one evaluation per step (two on the first). A force a(t, x, v) is
+/// evaluated with the velocity at hand: a_{n+1} = a(t_{n+1}, x_{n+1}, v_n); the method is then first order.
 ///
-/// Two forms, as velocity Verlet has (symplectic.hpp):
+/// Two forms, as velocity Verlet has (splitting.hpp):
 /// - step(a, x, v, t, dt): the stepper keeps a_n and a_{n-1}, and checks that a step continues its history
 ///   (the same position object, dt, and time, detail::continuation); a step that does not self-starts.
 /// - step(a, x, v, hist, t, dt): the caller keeps them in a `history`, as a hand-written loop keeps them
@@ -241,9 +242,9 @@ private:
 ///   changing x or v outside the stepper, the force, or dt. This step is const: one stepper serves any
 ///   number of states.
 template <class State>
-class beeman : public newtonian_traits<State, 2, 1, 2, false, false, false> {
+class beeman : public newtonian_traits<State, 2, 1, 2, false, false, true> {
 public:
-    using typename newtonian_traits<State, 2, 1, 2, false, false, false>::value_type;
+    using typename newtonian_traits<State, 2, 1, 2, false, false, true>::value_type;
 
     /// What the caller-kept form keeps between steps. On status::ok, acc is a(t + dt, x) of the new x and
     /// acc_prev the acc it had on entry (or a(t, x) after a self-starting step), and started is true; on
@@ -286,7 +287,7 @@ private:
     ODESTEP_INLINE static status advance(Accel& a, State& x, State& v, value_type t, value_type dt, bool continuing,
                                          State& a_now, State& a_prev) {
         using T = value_type;
-        const State a0 = continuing ? a_now : detail::acceleration(a, t, x);
+        const State a0 = continuing ? a_now : detail::acceleration(a, t, x, v);
         const T dt2_6 = dt * dt / T(6);
         const T dt_6 = dt / T(6);
         // The choice made once per step, not in every component (at -Os the loops stay loops).
@@ -298,7 +299,7 @@ private:
             ODESTEP_UNROLL
             for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + a0[n] * (dt * dt / T(2));
         }
-        const State a1 = detail::acceleration(a, t + dt, x1);
+        const State a1 = detail::acceleration(a, t + dt, x1, v);  // a(t, x, v): the velocity at hand, v_n
         State v1;
         if (continuing) {
             ODESTEP_UNROLL

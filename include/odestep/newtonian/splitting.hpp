@@ -130,28 +130,26 @@ public:
     static constexpr bool symplectic = true;
     static constexpr bool time_reversible = plan::tab.time_reversible;
     static constexpr system_form system = system_form::newtonian;
+    /// A force of position and velocity, a(t, x, v), is accepted: each kick evaluates it with the velocity
+    /// at hand (the one before the kick). The method is then not symplectic (is_symplectic_with_v says so)
+    /// and, but for Euler-Cromer, of first order only; nothing is kept between steps.
+    static constexpr bool velocity_forces = true;
 
     /// (x, v) <- (x, v)(t + dt). On `status::non_finite` x and v are left exactly as they were.
     template <class Accel, bool F = fsal, std::enable_if_t<!F, int> = 0>
     [[nodiscard]] status step(Accel&& a, State& x, State& v, T t, T dt) const {
-        return advance(a, x, v, t, dt, nullptr, nullptr);
+        return advance<false>(a, x, v, t, dt, nullptr, nullptr);
     }
 
-    /// As above; the acceleration of the last kick is kept for the next step (not when the step fails).
+    /// As above; the acceleration of the last kick is kept for the next step (not when the step fails). With
+    /// a force a(t, x, v) nothing is kept: the last kick's velocity is not the next step's.
     template <class Accel, bool F = fsal, std::enable_if_t<F, int> = 0>
     [[nodiscard]] status step(Accel&& a, State& x, State& v, T t, T dt) {
-        const bool hit = cache_.next.at(t, x);
-        if (!hit) {
-            cache_.next.clear();  // until a step succeeds, the kept value belongs to no step
-            cache_.acceleration = detail::acceleration(a, t, x);
+        if constexpr (is_velocity_force_v<Accel, State, T>) {
+            return advance<false>(a, x, v, t, dt, nullptr, nullptr);
+        } else {
+            return kept_step(a, x, v, t, dt);
         }
-        State last;
-        const status s = advance(a, x, v, t, dt, &cache_.acceleration, &last);
-        if (s == status::ok) {
-            detail::assign(cache_.acceleration, last);  // evaluated at t + dt, where the next step starts
-            cache_.next.expect(t, dt, x, hit);
-        }
-        return s;
     }
 
     /// The first-same-as-last step for a caller who keeps the acceleration, as a hand-written loop does:
@@ -160,11 +158,14 @@ public:
     /// entry value. The stepper keeps and checks nothing, so this form has no continuation test: one
     /// evaluation of a per step, always, and the step is const (one stepper serves any number of states).
     /// On status::non_finite x, v and acc are left exactly as they were. acc is an object of its own (not
-    /// x or v).
+    /// x or v). A force of position alone only.
     template <class Accel, bool F = fsal, std::enable_if_t<F, int> = 0>
     [[nodiscard]] status step(Accel&& a, State& x, State& v, State& acc, T t, T dt) const {
+        static_assert(is_position_force_v<Accel, State, T>,
+                      "odestep: a caller-kept acceleration needs a force of position alone, a(t, x): with "
+                      "a(t, x, v) the last kick's acceleration is not the next step's first");
         State last;
-        const status s = advance(a, x, v, t, dt, &acc, &last);
+        const status s = advance<true>(a, x, v, t, dt, &acc, &last);
         if (s == status::ok) detail::assign(acc, last);
         return s;
     }
@@ -178,10 +179,29 @@ public:
 private:
     detail::splitting_cache<State, fsal> cache_{};
 
+    // The stepper-kept first-same-as-last step (a force of position alone).
+    template <class Accel>
+    status kept_step(Accel& a, State& x, State& v, T t, T dt) {
+        const bool hit = cache_.next.at(t, x);
+        if (!hit) {
+            cache_.next.clear();  // until a step succeeds, the kept value belongs to no step
+            cache_.acceleration = detail::acceleration(a, t, x);  // (a force of position alone here)
+        }
+        State last;
+        const status s = advance<true>(a, x, v, t, dt, &cache_.acceleration, &last);
+        if (s == status::ok) {
+            detail::assign(cache_.acceleration, last);  // evaluated at t + dt, where the next step starts
+            cache_.next.expect(t, dt, x, hit);
+        }
+        return s;
+    }
+
     // The step: the splitting of x' = v, v' = a(t, x) into the drift (x' = v, v' = 0) and the kick (x' = 0,
     // v' = a(t, x)), each solved exactly, applied in the table's order with its coefficients times dt (see
     // splitting_table), into new x and v that replace them only when every component is finite.
-    template <class Accel>
+    // Kept: a first-same-as-last table's first kick uses *cached and its last kick's acceleration goes to
+    // *last; otherwise both are evaluated (and the pointers are not read).
+    template <bool Kept, class Accel>
     ODESTEP_INLINE static status advance(Accel& a, State& x, State& v, T t, T dt, const State* cached, State* last) {
         // Two objects, not one struct: the force sees the position's address, and a velocity in the same
         // object would then have to be stored before, and reloaded after, every evaluation not inlined.
@@ -193,7 +213,7 @@ private:
         State wx;
         State wv;
         if constexpr (!lazy_velocity) detail::assign(wv, v);
-        run(a, x, v, wx, wv, t, dt, cached, last, std::make_index_sequence<plan::updates>{});
+        run<Kept>(a, x, v, wx, wv, t, dt, cached, last, std::make_index_sequence<plan::updates>{});
         // The finiteness test's sum (detail::finite_sum) of the new x and v, x's components first: any order
         // serves (only a sum that fails goes on to the exact test), and this one needs the fewest register
         // copies where the force has just taken x apart.
@@ -215,16 +235,17 @@ private:
         return status::ok;
     }
 
-    template <class Accel, std::size_t... K>
+    template <bool Kept, class Accel, std::size_t... K>
     ODESTEP_INLINE static void run(Accel& a, const State& x, const State& v, State& wx, State& wv, T t, T dt,
                                    const State* cached, State* last, std::index_sequence<K...>) {
-        (update<K>(a, x, v, wx, wv, t, dt, cached, last), ...);
+        (update<K, Kept>(a, x, v, wx, wv, t, dt, cached, last), ...);
     }
 
     // Update K of the sequence, emitted only when its coefficient is not zero.
-    template <std::size_t K, class Accel>
+    template <std::size_t K, bool Kept, class Accel>
     ODESTEP_INLINE static void update(Accel& a, const State& x, const State& v, State& wx, State& wv, T t, T dt,
                                       const State* cached, State* last) {
+        (void)cached, (void)last;
         constexpr T c = plan::coefficient(K);
         if constexpr (c != T(0)) {
             const T h = scaled<K>(dt);
@@ -235,17 +256,13 @@ private:
             if constexpr (!plan::is_kick(K)) {
                 ODESTEP_UNROLL
                 for (std::size_t n = 0; n < N; ++n) wx[n] = px[n] + h * pv[n];
-            } else if constexpr (fsal && K == plan::first) {
-                if (cached != nullptr) {
-                    kick(wv, pv, *cached, h);
-                } else {
-                    kick(wv, pv, detail::acceleration(a, t, px), h);
-                }
-            } else if constexpr (fsal && K == plan::last) {
-                *last = detail::acceleration(a, t + dt, px);  // at x_{n+1}: kept for the next step
+            } else if constexpr (fsal && Kept && K == plan::first) {
+                kick(wv, pv, *cached, h);  // a(t, x), kept from the last step's last kick
+            } else if constexpr (fsal && Kept && K == plan::last) {
+                *last = detail::acceleration(a, t + dt, px, pv);  // at x_{n+1}: kept for the next step
                 kick(wv, pv, *last, h);
             } else {
-                kick(wv, pv, detail::acceleration(a, kick_time<K>(t, dt), px), h);
+                kick(wv, pv, detail::acceleration(a, kick_time<K>(t, dt), px, pv), h);
             }
         }
     }
