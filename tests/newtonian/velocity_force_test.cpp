@@ -41,8 +41,8 @@ double damped_error(std::uint64_t n) {
 
 using velocity_steppers =
     std::tuple<odestep::euler_cromer<s1>, odestep::euler_cromer_drift_first<s1>, odestep::velocity_verlet<s1>,
-               odestep::position_verlet<s1>, odestep::forest_ruth<s1>, odestep::yoshida6<s1>,
-               odestep::blanes_moan4<s1>, odestep::beeman<s1>>;
+               odestep::position_verlet<s1>, odestep::forest_ruth<s1>, odestep::yoshida6<s1>, odestep::blanes_moan4<s1>,
+               odestep::beeman<s1>>;
 
 template <class Fn, std::size_t... I>
 void for_each_stepper(Fn&& fn, std::index_sequence<I...>) {
