@@ -41,8 +41,8 @@ int main() {
 
     // The event loop re-steps the user's stepper to find y = 1/2, at t = ln 2.
     state z{1.0};
-    auto half = odestep::make_event<state>([](double, const state& s) { return s[0] - 0.5; },
-                                           odestep::direction::falling);
+    auto half =
+        odestep::make_event<state>([](double, const state& s) { return s[0] - 0.5; }, odestep::direction::falling);
     const auto e = odestep::integrate(my_heun<state>{}, decay, z, 0.0, 2.0, 0.01, odestep::watch(half));
     std::printf("event: status %s at t = %.10f (exact ln 2 = %.10f)\n", odestep::to_string(e.status), e.t,
                 std::log(2.0));

@@ -64,14 +64,15 @@ struct user_euler : odestep::stepper_defaults<State> {
 
 TEST_CASE("stepper: every stepper of the library publishes the one trait set") {
     CHECK(all_rk_publish(static_cast<odestep_test::all_methods*>(nullptr)));
-    using others = std::tuple<
-        odestep::adams_bashforth2<s2>, odestep::adams_bashforth3<s2>, odestep::adams_bashforth4<s2>,
-        odestep::adams_bashforth5<s2>, odestep::adams_bashforth_moulton4<s2>, odestep::euler_cromer<s2>,
-        odestep::euler_cromer_drift_first<s2>, odestep::velocity_verlet<s2>, odestep::position_verlet<s2>,
-        odestep::forest_ruth<s2>, odestep::yoshida6<s2>, odestep::blanes_moan4<s2>, odestep::newtonian_euler<s2>,
-        odestep::newtonian_midpoint<s2>, odestep::newtonian_euler_richardson<s2>, odestep::half_step<s2>,
-        odestep::leapfrog_position_form<s2>, odestep::beeman<s2>, odestep::predictor_corrector<s2>,
-        odestep::boris<s3>, odestep::boris_relativistic<s3>, user_euler<s1>>;
+    using others =
+        std::tuple<odestep::adams_bashforth2<s2>, odestep::adams_bashforth3<s2>, odestep::adams_bashforth4<s2>,
+                   odestep::adams_bashforth5<s2>, odestep::adams_bashforth_moulton4<s2>, odestep::euler_cromer<s2>,
+                   odestep::euler_cromer_drift_first<s2>, odestep::velocity_verlet<s2>, odestep::position_verlet<s2>,
+                   odestep::forest_ruth<s2>, odestep::yoshida6<s2>, odestep::blanes_moan4<s2>,
+                   odestep::newtonian_euler<s2>, odestep::newtonian_midpoint<s2>,
+                   odestep::newtonian_euler_richardson<s2>, odestep::half_step<s2>, odestep::leapfrog_position_form<s2>,
+                   odestep::beeman<s2>, odestep::predictor_corrector<s2>, odestep::boris<s3>,
+                   odestep::boris_relativistic<s3>, user_euler<s1>>;
     CHECK(all_publish(static_cast<others*>(nullptr)));
 
     // The values that say what a stepper is, from its method (the sources are in the headers and README).

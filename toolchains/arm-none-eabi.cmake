@@ -29,12 +29,15 @@ set(CMAKE_CXX_FLAGS_INIT "${ODESTEP_TARGET_CPU_FLAGS} -ffunction-sections -fdata
 set(CMAKE_ASM_FLAGS_INIT "${ODESTEP_TARGET_CPU_FLAGS}")
 set(CMAKE_EXE_LINKER_FLAGS_INIT "${ODESTEP_TARGET_CPU_FLAGS} -Wl,--gc-sections")
 
-# Search the toolchain's sysroot for libraries and headers, the host for programs.
+# Search the toolchain's sysroot for libraries and headers, the host for programs. CMake packages are
+# searched in both: a header-only package such as odestep installs architecture-independent files, so a
+# host prefix on CMAKE_PREFIX_PATH serves a cross build (with ONLY, find_package(odestep) would need
+# -Dodestep_DIR=<prefix>/share/cmake/odestep or the prefix added to CMAKE_FIND_ROOT_PATH).
 set(CMAKE_FIND_ROOT_PATH /usr/lib/arm-none-eabi)
 set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
 set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
 set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
-set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
+set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE BOTH)
 
 # The emulator ctest runs each image with: semihosting gives the image printf and its exit status becomes
 # QEMU's exit code. A core without a QEMU board (Cortex-M0+) leaves it unset: its images are built, not run.

@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Builds and runs tests/package/consumer against odestep installed (find_package), added with
-# add_subdirectory, and fetched with FetchContent; in the last two, odestep's own tests must not build.
+# add_subdirectory, and fetched with FetchContent; in the last two, odestep's own tests must not build. Where
+# arm-none-eabi-g++ is installed, also cross-compiles tests/package/firmware_consumer for Cortex-M4F the
+# same three ways, with the project's toolchain file, and find_package once more under a toolchain that
+# searches packages only in its sysroot (CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY), with odestep_DIR given.
 # Usage: check_consumers.sh SOURCE_DIR WORK_DIR CXX_COMPILER
 set -euo pipefail
 src=$1 work=$2 cxx=$3
@@ -25,3 +28,23 @@ for mode in find_package add_subdirectory FetchContent; do
   fi
   echo "ok: $mode"
 done
+
+command -v arm-none-eabi-g++ >/dev/null || { echo "skipped: the cross-compiled consumer (no arm-none-eabi-g++)"; exit 0; }
+firmware="$src/tests/package/firmware_consumer"
+toolchain="$src/toolchains/cortex-m4f.cmake"
+for mode in find_package add_subdirectory FetchContent; do
+  build="$work/firmware-$mode"
+  cmake --no-warn-unused-cli -S "$firmware" -B "$build" -DCMAKE_TOOLCHAIN_FILE="$toolchain" -DODESTEP_MODE="$mode" \
+        -DODESTEP_SOURCE="$src" -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
+  cmake --build "$build" >/dev/null
+  test -f "$build/libfirmware.a"
+  echo "ok: cross-compiled firmware, $mode"
+done
+# A user's toolchain file that keeps package search in its sysroot: odestep_DIR points at the package.
+strict="$work/strict-toolchain.cmake"
+printf 'include(%s)\nset(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)\n' "$toolchain" > "$strict"
+build="$work/firmware-strict"
+cmake -S "$firmware" -B "$build" -DCMAKE_TOOLCHAIN_FILE="$strict" -DODESTEP_MODE=find_package \
+      -Dodestep_DIR="$work/prefix/share/cmake/odestep" >/dev/null
+cmake --build "$build" >/dev/null
+echo "ok: cross-compiled firmware, find_package with odestep_DIR under CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY"

@@ -38,7 +38,7 @@ set(odestep_target_doctest_definitions
 function(odestep_target_options target)
   target_include_directories(${target} SYSTEM PRIVATE ${odestep_target_doctest_dir})
   target_include_directories(${target} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})  # "support/..." (shared test helpers)
-  target_compile_definitions(${target} PRIVATE ${odestep_target_doctest_definitions})
+  target_compile_definitions(${target} PRIVATE ${odestep_target_doctest_definitions} ${ODESTEP_PROJECT_VERSION_DEFINITIONS})
   # doctest.h is a system header here, so the full warning set applies to odestep and the tests only.
   # -Wno-psabi: GCC notes an ABI change of GCC 7.1 in libstdc++ code inlined into doctest; nothing to fix.
   target_compile_options(${target} PRIVATE ${ODESTEP_WARNINGS} -Wno-psabi)
