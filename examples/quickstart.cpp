@@ -1,4 +1,4 @@
-// The README's first example: a harmonic oscillator integrated with RK4 for ten time units.
+// examples/quickstart.cpp: a harmonic oscillator integrated with RK4 for ten time units.
 #include <odestep/odestep.hpp>
 
 #include <array>
@@ -16,7 +16,8 @@ int main() {
         std::printf("stopped: %s at t = %g\n", odestep::to_string(r.status), r.t);
         return 1;
     }
-    std::printf("status %s after %zu steps, t = %g\n", odestep::to_string(r.status), r.steps, r.t);
+    std::printf("status %s after %llu steps, t = %g\n", odestep::to_string(r.status),
+                static_cast<unsigned long long>(r.steps), r.t);
     std::printf("x = %.12f (exact cos 10 = %.12f)\n", y[0], std::cos(10.0));
     std::printf("v = %.12f (exact -sin 10 = %.12f)\n", y[1], -std::sin(10.0));
     return 0;

@@ -29,6 +29,25 @@ for mode in find_package add_subdirectory FetchContent; do
   echo "ok: $mode"
 done
 
+# The README's FetchContent snippet, as written: the first ```cmake block under "## Getting it", in a project
+# whose executable is `app`, fetched from this repository by branch and then pinned to its commit.
+readme="$work/readme"
+mkdir -p "$readme"
+snippet=$(awk '/^## Getting it/ { on = 1 } on && /^```cmake$/ { grab = 1; next } grab && /^```$/ { exit } grab' "$src/README.md")
+[ -n "$snippet" ] || { echo "FAIL: no cmake block under '## Getting it' in README.md"; exit 1; }
+cp "$consumer/main.cpp" "$readme/main.cpp"
+pins=("$(git -C "$src" rev-parse HEAD)")
+git -C "$src" rev-parse --verify -q main >/dev/null && pins=(main "${pins[@]}")
+for pin in "${pins[@]}"; do
+  { echo "cmake_minimum_required(VERSION 3.14)"; echo "project(readme_snippet LANGUAGES CXX)";
+    echo "add_executable(app main.cpp)"; echo "$snippet" | sed "s/GIT_TAG        main/GIT_TAG        $pin/"; } > "$readme/CMakeLists.txt"
+  rm -rf "$readme/build"
+  cmake -S "$readme" -B "$readme/build" -DCMAKE_CXX_COMPILER="$cxx" -DODESTEP_REPOSITORY="$src" >/dev/null
+  cmake --build "$readme/build" >/dev/null
+  "$readme/build/app" >/dev/null
+  echo "ok: the README's FetchContent snippet, GIT_TAG $pin"
+done
+
 command -v arm-none-eabi-g++ >/dev/null || { echo "skipped: the cross-compiled consumer (no arm-none-eabi-g++)"; exit 0; }
 firmware="$src/tests/package/firmware_consumer"
 toolchain="$src/toolchains/cortex-m4f.cmake"
