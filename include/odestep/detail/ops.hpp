@@ -95,12 +95,13 @@ ODESTEP_INLINE constexpr bool all_finite(const std::array<T, N>& y, const More&.
     return finite_sum(sum) || (each_finite(y) && (each_finite(more) && ...));
 }
 
-/// to = from. Optimizing for size, one aggregate copy: the fewest and shortest instructions. Otherwise
-/// component by component, so that values still in registers go straight to `to` (an aggregate copy of a
-/// small array can make the compiler pack two floats into an integer register first).
+/// to = from. Optimizing for size, a state of more than two components is copied whole: one block copy, the
+/// fewest and shortest instructions. Otherwise component by component, so that values still in registers go
+/// straight to `to` (two components fit in registers, and a small array copied whole can be packed into an
+/// integer register first).
 template <class T, std::size_t N>
 ODESTEP_INLINE constexpr void assign(std::array<T, N>& to, const std::array<T, N>& from) noexcept {
-    if constexpr (optimizing_for_size) {
+    if constexpr (optimizing_for_size && N > 2) {
         to = from;
     } else {
         ODESTEP_UNROLL
