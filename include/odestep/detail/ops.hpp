@@ -74,18 +74,26 @@ ODESTEP_INLINE constexpr bool each_finite(const std::array<T, N>& y) noexcept {
     }
 }
 
-/// sum += every component of y.
+/// sum += every component of y (or y itself, a scalar that belongs to the test).
 template <class T, std::size_t N>
 ODESTEP_INLINE constexpr void add_components(T& sum, const std::array<T, N>& y) noexcept {
     ODESTEP_UNROLL
     for (std::size_t n = 0; n < N; ++n) sum += y[n];
 }
+template <class T>
+ODESTEP_INLINE constexpr void add_components(T& sum, T y) noexcept {
+    sum += y;
+}
+template <class T>
+ODESTEP_INLINE constexpr bool each_finite(T y) noexcept {
+    return is_finite(y);
+}
 
-/// True when every component of every array given is finite. The hot path is one plain sum of all the
-/// components (finite_sum): one compare and one branch however many arrays; only when that fails,
-/// because a component is not finite or because the sum overflowed, is the exact test run. Always inlined,
-/// like each_finite: GCC at -Os keeps a function called from two places out of line, and then every value
-/// live across the call spills.
+/// True when every component of every array given (and every scalar given after the first array) is finite.
+/// The hot path is one plain sum of all the components (finite_sum): one compare and one branch however many
+/// values; only when that fails, because a component is not finite or because the sum overflowed, is the
+/// exact test run. Always inlined, like each_finite: GCC at -Os keeps a function called from two places out
+/// of line, and then every value live across the call spills.
 template <class T, std::size_t N, class... More>
 ODESTEP_INLINE constexpr bool all_finite(const std::array<T, N>& y, const More&... more) noexcept {
     T sum = y[0];
@@ -95,13 +103,17 @@ ODESTEP_INLINE constexpr bool all_finite(const std::array<T, N>& y, const More&.
     return finite_sum(sum) || (each_finite(y) && (each_finite(more) && ...));
 }
 
-/// to = from. Optimizing for size, a state of more than two components is copied whole: one block copy, the
-/// fewest and shortest instructions. Otherwise component by component, so that values still in registers go
-/// straight to `to` (two components fit in registers, and a small array copied whole can be packed into an
-/// integer register first).
-template <class T, std::size_t N>
+/// How assign copies a state: component by component, so that values still in registers go straight to
+/// memory (the default); or, where the build optimizes for size and the state has more than two components,
+/// as one block, the fewest and shortest instructions for a state built in memory (explicit_rk's new
+/// state). Which is smaller depends on where the values are, so each caller says which it has (measured:
+/// explicit_rk's RK4 on Cortex-M4F is smallest with the block, Adams' history with the components).
+enum class copy_form { components, block_at_size };
+
+/// to = from, in the form given.
+template <copy_form Form = copy_form::components, class T, std::size_t N>
 ODESTEP_INLINE constexpr void assign(std::array<T, N>& to, const std::array<T, N>& from) noexcept {
-    if constexpr (optimizing_for_size && N > 2) {
+    if constexpr (Form == copy_form::block_at_size && optimizing_for_size && N > 2) {
         to = from;
     } else {
         ODESTEP_UNROLL
@@ -120,7 +132,7 @@ constexpr std::array<T, N> plus_scaled(const std::array<T, N>& x, T c, const std
 
 /// The same values, bit for bit where they are numbers (NaN equals nothing).
 template <class T, std::size_t N>
-constexpr bool same_values(const std::array<T, N>& a, const std::array<T, N>& b) noexcept {
+ODESTEP_INLINE constexpr bool same_values(const std::array<T, N>& a, const std::array<T, N>& b) noexcept {
     for (std::size_t n = 0; n < N; ++n)
         if (!(a[n] == b[n])) return false;
     return true;

@@ -138,7 +138,7 @@ public:
         const State vn = ops::plus(ops::rotate(ops::plus(v, hE), tau, tt), hE);
         const State xn = ops::plus(x, ops::scaled(dt, vn));
         // tt takes part: a B so large that |tau|^2 overflows would otherwise give s = 0, no rotation at all.
-        if (!detail::all_finite(xn, vn, std::array<T, 1>{tt})) return status::non_finite;
+        if (!detail::all_finite(xn, vn, tt)) return status::non_finite;
         x = xn;
         v = vn;
         return status::ok;
@@ -175,7 +175,7 @@ private:
     T qm_ = T(1);
 
     static status commit(State& v, const State& w, T extra) noexcept {
-        if (!detail::all_finite(w, std::array<T, 1>{extra})) return status::non_finite;
+        if (!detail::all_finite(w, extra)) return status::non_finite;
         v = w;
         return status::ok;
     }
@@ -239,7 +239,7 @@ public:
         const T gn = gamma(un);
         const State xn = ops::plus(x, ops::scaled(dt / gn, un));
         // gamma- and gamma+ take part: |u|^2 overflowing to Inf would otherwise stop x silently.
-        if (!detail::all_finite(xn, un, std::array<T, 1>{tt + gm + gn})) return status::non_finite;
+        if (!detail::all_finite(xn, un, T(tt + gm + gn))) return status::non_finite;
         x = xn;
         u = un;
         return status::ok;
@@ -285,7 +285,7 @@ private:
     T inv_c2_ = T(1);
 
     static status commit(State& u, const State& w, T extra) noexcept {
-        if (!detail::all_finite(w, std::array<T, 1>{extra})) return status::non_finite;
+        if (!detail::all_finite(w, extra)) return status::non_finite;
         u = w;
         return status::ok;
     }

@@ -148,7 +148,7 @@ public:
         }
         if constexpr (!fused_total) add_all(total, next);
         if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) && !detail::each_finite(next)) return status::non_finite;
-        detail::assign(y, next);
+        detail::assign<detail::copy_form::block_at_size>(y, next);
         return status::ok;
     }
 
@@ -174,8 +174,8 @@ public:
         }
         if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) && !(detail::each_finite(next) && detail::each_finite(err)))
             return status::non_finite;
-        detail::assign(y, next);
-        detail::assign(error, err);
+        detail::assign<detail::copy_form::block_at_size>(y, next);
+        detail::assign<detail::copy_form::block_at_size>(error, err);
         return status::ok;
     }
 
@@ -204,9 +204,9 @@ public:
         if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) &&
             !(detail::each_finite(next) && detail::each_finite(err) && detail::each_finite(err2)))
             return status::non_finite;
-        detail::assign(y, next);
-        detail::assign(error, err);
-        detail::assign(error2, err2);
+        detail::assign<detail::copy_form::block_at_size>(y, next);
+        detail::assign<detail::copy_form::block_at_size>(error, err);
+        detail::assign<detail::copy_form::block_at_size>(error2, err2);
         return status::ok;
     }
 
