@@ -15,7 +15,7 @@
 //
 // Data: coffee_filter.csv (t, y, v, a of the readings, then each fitted model's y), and
 // coffee_filter_models.csv (the four fitted curves on a fine grid: quadratic, linear, then both from
-// reading 10).
+// reading 10), coffee_filter_fits.csv (the four fits' parameters).
 #include <odestep/odestep.hpp>
 
 #include <array>
@@ -107,6 +107,7 @@ fit best_fit(drag law, std::size_t first) {
 int main(int argc, char** argv) {
     example::csv_file data(argc, argv, "coffee_filter.csv");
     example::csv_file curves(argc, argv, "coffee_filter_models.csv");
+    example::csv_file fitted(argc, argv, "coffee_filter_fits.csv");
     std::printf("# coffee filter, %zu readings (course Table 3.2), g = %g\n", readings, g);
 
     // (a) least-squares line through the last ten readings
@@ -129,9 +130,12 @@ int main(int argc, char** argv) {
     std::printf("%-3s %-9s %-5s %22s %22s %22s %22s\n", "fit", "drag", "from", "vt", "u0", "y0", "rms");
     const char* names[] = {"quadratic", "linear", "quadratic", "linear"};
     const fit* fits[] = {&quad, &lin, &quad_late, &lin_late};
-    for (int k = 0; k < 4; ++k)
+    fitted.csv.header("first_reading", "quadratic", "vt", "u0", "y0", "rms");
+    for (int k = 0; k < 4; ++k) {
+        fitted.csv.row(k < 2 ? std::size_t{0} : late, k % 2 == 0, fits[k]->vt, fits[k]->u0, fits[k]->y0, fits[k]->rms);
         std::printf("%-3s %-9s %-5zu %22.15g %22.15g %22.15g %22.15g\n", "fit", names[k], k < 2 ? std::size_t{0} : late,
                     fits[k]->vt, fits[k]->u0, fits[k]->y0, fits[k]->rms);
+    }
     std::printf("better_fit all %s late %s\n", quad.rms < lin.rms ? "quadratic" : "linear",
                 quad_late.rms < lin_late.rms ? "quadratic" : "linear");
 
@@ -166,5 +170,5 @@ int main(int argc, char** argv) {
             return 1;
         curves.next_block();
     }
-    return data.good() && curves.good() ? 0 : 1;
+    return data.good() && curves.good() && fitted.good() ? 0 : 1;
 }
