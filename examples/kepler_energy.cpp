@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
     const char* names[] = {"rk4", "velocity_verlet", "position_verlet", "forest_ruth"};
     for (int k = 0; k < 4 && ok; ++k) {
         data.csv.header(names[k], "max_abs_dE_over_E0");
-        for (std::size_t per_period : {200, 400}) {
+        for (std::size_t per_period : {std::size_t{200}, std::size_t{400}}) {
             const std::size_t periods = per_period == 200 ? 5000 : 2500;
             example::csv_file* out = per_period == 200 ? &data : nullptr;
             result r{};
