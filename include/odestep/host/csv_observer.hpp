@@ -52,7 +52,7 @@ public:
         return *this;
     }
 
-    /// One line of column names, e.g. header("t", "x", "v").
+    /// One line of column names (C strings), e.g. header("t", "x", "v").
     template <class... Names>
     void header(const Names&... names) {
         static_assert(sizeof...(Names) > 0, "odestep: csv_observer::header needs at least one name");
