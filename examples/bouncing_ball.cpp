@@ -7,12 +7,16 @@
 //       with status event_limit instead of tunnelling through the floor;
 //   (b) a latch: once the rebound speed e |v| is below 0.1 m/s, the action puts the ball at rest on the
 //       floor and sets a flag that turns the right-hand side off; the run reaches t = 5 with status ok.
+//
+// Data: bouncing_ball.csv (t, y, v of run (b) at every step, and at every impact before and after it).
 #include <odestep/odestep.hpp>
 
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+
+#include "support/csv_file.hpp"
 
 namespace {
 using state = std::array<double, 2>;  // y, v
@@ -30,7 +34,9 @@ struct ball_rhs {
 auto height = [](double, const state& s) { return s[0]; };
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+    example::csv_file data(argc, argv, "bouncing_ball.csv");
+    data.csv.header("t", "y", "v");
     std::printf("# bouncing ball: h = %g m, e = %g, g = %g, RK4 dt = %g\n", h, e, g, dt);
     // (a) no latch
     std::array<double, 10> impacts{};
@@ -55,6 +61,7 @@ int main() {
     std::size_t m = 0;
     auto bounce_or_rest = [&](double t_hit, state& y) {
         ++m;
+        data.csv(t_hit, y);               // the impact, before the action
         if (e * std::fabs(y[1]) < 0.1) {  // too slow to bounce visibly again: lie still
             resting = true;
             rest_t = t_hit;
@@ -62,12 +69,13 @@ int main() {
         } else {
             y[1] = -e * y[1];
         }
+        data.csv(t_hit, y);  // and after it
     };
     s = {h, 0.0};
     const auto floor_b = odestep::make_event<state>(height, odestep::direction::falling, bounce_or_rest);
-    const auto b =
-        odestep::integrate(odestep::rk4<state>{}, ball_rhs{&resting}, s, 0.0, t_end, dt, odestep::watch(floor_b));
+    const auto b = odestep::integrate(odestep::rk4<state>{}, ball_rhs{&resting}, s, 0.0, t_end, dt,
+                                      odestep::watch(floor_b), data.csv);
     std::printf("latch status %s t %.17g impacts %zu rest_t %.17g y %.17g v %.17g resting %d\n",
                 odestep::to_string(b.status), b.t, b.fired, rest_t, s[0], s[1], resting ? 1 : 0);
-    return m == b.fired ? 0 : 1;
+    return m == b.fired && data.good() ? 0 : 1;
 }

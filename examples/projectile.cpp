@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "support/golden.hpp"
+
 namespace {
 using state = std::array<double, 4>;  // x, y, vx, vy
 constexpr double g = 9.8;
@@ -38,35 +40,6 @@ double range(double angle, double h, double k, double step) {
 
 double rk4_range(double angle) { return range<odestep::rk4<state>>(angle, 2.0, 0.1, dt); }
 
-// Golden-section search for the maximum of a unimodal f on [a, b], until b - a <= tol (Kiefer 1953; as in
-// Press et al., Numerical Recipes, Sec. 10.2): each round keeps the larger of the two interior points,
-// which is one of the next round's points, so one new evaluation per round.
-template <class F>
-double golden_max(F f, double a, double b, double tol, int& rounds) {
-    const double w = (std::sqrt(5.0) - 1.0) / 2.0;  // 1/phi
-    double c = b - w * (b - a);
-    double d = a + w * (b - a);
-    double fc = f(c);
-    double fd = f(d);
-    rounds = 0;
-    while (b - a > tol) {
-        ++rounds;
-        if (fc >= fd) {
-            b = d;
-            d = c;
-            fd = fc;
-            c = b - w * (b - a);
-            fc = f(c);
-        } else {
-            a = c;
-            c = d;
-            fc = fd;
-            d = a + w * (b - a);
-            fd = f(d);
-        }
-    }
-    return (a + b) / 2;
-}
 }  // namespace
 
 int main() {
@@ -77,7 +50,7 @@ int main() {
     const double flat = range<odestep::rk4<state>>(pi / 4, 0.0, 0.0, dt);
     std::printf("nodrag45 range %.17g\n", flat);
     int rounds = 0;
-    const double best = golden_max(rk4_range, 0.0, pi / 2, 1e-6, rounds);
+    const double best = example::golden_max(rk4_range, 0.0, pi / 2, 1e-6, rounds);
     std::printf("drag h 2 k 0.1 optimum_angle %.17g rad %.10f deg golden_rounds %d\n", best, best * 180 / pi, rounds);
     std::printf("range_opt rk4 %.17g\n", rk4_range(best));
     std::printf("range_opt rk4_dt/10 %.17g\n", range<odestep::rk4<state>>(best, 2.0, 0.1, dt / 10));
