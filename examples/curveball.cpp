@@ -58,7 +58,6 @@ at_plate throw_ball(const pitch& p, double angle, Observer&& observe) {
     vec v{p.speed * std::cos(angle), 0.0, p.speed * std::sin(angle)};
     const auto reach = odestep::make_event<vec>([](double, const vec& q, const vec&) { return q[0] - plate; },
                                                 odestep::direction::rising);
-    // euler_cromer once it accepts a(t, x, v)
     const auto r = odestep::integrate(odestep::newtonian_euler_richardson<vec>{}, baseball{p}, x, v, 0.0, 10.0, dt,
                                       odestep::watch(reach), observe);
     return {r.status == odestep::status::stopped_by_event, r.t, x[1], x[2]};

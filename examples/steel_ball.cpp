@@ -60,7 +60,6 @@ landing fly(const ball& b, double h, double vx, double vy, Observer&& observe) {
     // From h = 0 the event starts unarmed (g = 0 at t0) and arms once y > 0 has been seen.
     const auto ground =
         odestep::make_event<vec>([](double, const vec& q, const vec&) { return q[1]; }, odestep::direction::falling);
-    // euler_cromer once it accepts a(t, x, v)
     const auto r = odestep::integrate(odestep::newtonian_euler_richardson<vec>{}, b, x, v, 0.0, 100.0, dt,
                                       odestep::watch(ground), observe);
     return {r.status == odestep::status::stopped_by_event, r.t, x[0]};
