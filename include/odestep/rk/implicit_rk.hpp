@@ -40,7 +40,7 @@ namespace odestep {
 /// otherwise forward differences of f (finite_difference_jacobian: N evaluations, plus f(t_n, y_n) unless
 /// the table's first stage is that evaluation).
 ///
-/// `Newton` is odestep::newton<K> (iterate until converged, at most K times per solve, the default K = 7)
+/// `Newton` is odestep::newton<K> (iterate until converged, at most K times per solve, the default K = 10)
 /// or odestep::fixed_newton<K> (exactly K iterations, constant cost). The convergence test and its
 /// tolerance are newton_tolerance's; set_tolerance changes them.
 ///
@@ -324,7 +324,7 @@ private:
     }
 };
 
-// The named steppers. The second argument picks the Newton policy: newton<K> (the default, K = 7) or
+// The named steppers. The second argument picks the Newton policy: newton<K> (the default, K = 10) or
 // fixed_newton<K>, e.g. odestep::backward_euler<state, odestep::fixed_newton<2>>.
 /// Backward Euler: order 1, L-stable.
 template <class State, class Newton = newton<>>

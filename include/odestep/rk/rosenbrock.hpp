@@ -18,6 +18,57 @@
 
 namespace odestep {
 
+namespace detail {
+
+/// The coefficients of a Rosenbrock table in Hairer & Wanner's transformed form (Solving ODE II, Sec. IV.7,
+/// (7.7)-(7.8)), as the stepper uses them.
+template <class T, std::size_t S>
+struct rosenbrock_coefficients {
+    std::array<std::array<T, S>, S> a{};    ///< alpha Gamma^-1, strictly lower triangular
+    std::array<std::array<T, S>, S> gc{};   ///< gamma C, C = I / gamma - Gamma^-1 (strictly lower triangular)
+    std::array<T, S> m{};                   ///< b^T Gamma^-1
+    std::array<T, S> node{};                ///< alpha_i = sum_j alpha_ij
+    std::array<T, S> time_weight{};         ///< gamma gamma_i, gamma_i = sum_{j<=i} gamma_ij
+    std::array<bool, S> reuses_previous{};  ///< stage i's input (time and state) is stage i-1's
+};
+
+/// Computes the transformed coefficients at compile time (Gamma^-1 by forward substitution).
+template <class T, std::size_t S>
+constexpr rosenbrock_coefficients<T, S> transform_rosenbrock(const rosenbrock_tableau<T, S>& tab) noexcept {
+    rosenbrock_coefficients<T, S> x{};
+    const T gamma = tab.gamma[0][0];
+    std::array<std::array<T, S>, S> inv{};
+    for (std::size_t col = 0; col < S; ++col)
+        for (std::size_t i = col; i < S; ++i) {
+            T sum = i == col ? T(1) : T(0);
+            for (std::size_t j = col; j < i; ++j) sum -= tab.gamma[i][j] * inv[j][col];
+            inv[i][col] = sum / tab.gamma[i][i];
+        }
+    for (std::size_t i = 0; i < S; ++i) {
+        T node = T(0);
+        T gi = T(0);
+        for (std::size_t j = 0; j < S; ++j) {
+            node += tab.alpha[i][j];
+            gi += tab.gamma[i][j];
+            T a = T(0);
+            for (std::size_t k = 0; k < S; ++k) a += tab.alpha[i][k] * inv[k][j];
+            x.a[i][j] = j < i ? a : T(0);
+            x.gc[i][j] = j < i ? -gamma * inv[i][j] : T(0);
+            x.m[i] += tab.b[j] * inv[j][i];
+        }
+        x.node[i] = node;
+        x.time_weight[i] = gamma * gi;
+    }
+    for (std::size_t i = 1; i < S; ++i) {
+        bool same = x.node[i] == x.node[i - 1] && x.a[i][i - 1] == T(0);
+        for (std::size_t j = 0; j + 1 < i; ++j) same = same && x.a[i][j] == x.a[i - 1][j];
+        x.reuses_previous[i] = same;
+    }
+    return x;
+}
+
+}  // namespace detail
+
 /// \brief A Rosenbrock step for y' = f(t, y) from the table `Method::table<T>` (a rosenbrock_tableau).
 ///
 /// Implemented in Hairer & Wanner's transformed variables (Solving ODE II, Sec. IV.7, (7.7)-(7.8)):
@@ -57,48 +108,7 @@ private:
                   "one diagonal entry, and weights summing to 1");
     static constexpr T gamma = tab.gamma[0][0];
 
-    // The derived coefficients of the transformed form.
-    struct transformed {
-        std::array<std::array<T, S>, S> a{};    // alpha Gamma^-1, strictly lower
-        std::array<std::array<T, S>, S> gc{};   // gamma C = I - gamma Gamma^-1, strictly lower
-        std::array<T, S> m{};                   // b^T Gamma^-1
-        std::array<T, S> node{};                // alpha_i
-        std::array<T, S> time_weight{};         // gamma gamma_i
-        std::array<bool, S> reuses_previous{};  // stage i's input is stage i-1's
-    };
-    static constexpr transformed transform() noexcept {
-        transformed x{};
-        // Gamma^-1 by forward substitution, column by column (Gamma is lower triangular).
-        std::array<std::array<T, S>, S> inv{};
-        for (std::size_t col = 0; col < S; ++col)
-            for (std::size_t i = col; i < S; ++i) {
-                T sum = i == col ? T(1) : T(0);
-                for (std::size_t j = col; j < i; ++j) sum -= tab.gamma[i][j] * inv[j][col];
-                inv[i][col] = sum / tab.gamma[i][i];
-            }
-        for (std::size_t i = 0; i < S; ++i) {
-            T node = T(0);
-            T gi = T(0);
-            for (std::size_t j = 0; j < S; ++j) {
-                node += tab.alpha[i][j];
-                gi += tab.gamma[i][j];
-                T a = T(0);
-                for (std::size_t k = 0; k < S; ++k) a += tab.alpha[i][k] * inv[k][j];
-                x.a[i][j] = j < i ? a : T(0);
-                x.gc[i][j] = j < i ? -gamma * inv[i][j] : T(0);
-                x.m[i] += tab.b[j] * inv[j][i];
-            }
-            x.node[i] = node;
-            x.time_weight[i] = gamma * gi;
-        }
-        for (std::size_t i = 1; i < S; ++i) {
-            bool same = x.node[i] == x.node[i - 1] && x.a[i][i - 1] == T(0);
-            for (std::size_t j = 0; j + 1 < i; ++j) same = same && x.a[i][j] == x.a[i - 1][j];
-            x.reuses_previous[i] = same;
-        }
-        return x;
-    }
-    static constexpr transformed co = transform();
+    static constexpr detail::rosenbrock_coefficients<T, S> co = detail::transform_rosenbrock(tab);
     static constexpr std::size_t count_new_evaluations() noexcept {
         std::size_t n = 0;
         for (std::size_t i = 1; i < S; ++i) n += co.reuses_previous[i] ? 0U : 1U;
