@@ -125,8 +125,8 @@ TEST_CASE("jacobian: forward differences match the closed form to sqrt(eps), in 
 
 TEST_CASE("jacobian: the increment is sqrt(eps max(|x|, 1e-5)), exact in T") {
     CHECK(odestep::difference_increment(1.0) == doctest::Approx(std::sqrt(std::numeric_limits<double>::epsilon())));
-    CHECK(odestep::difference_increment(0.0f) ==
-          doctest::Approx(std::sqrt(std::numeric_limits<float>::epsilon() * 1e-5f)).epsilon(1e-6));
+    CHECK(double(odestep::difference_increment(0.0f)) ==
+          doctest::Approx(double(std::sqrt(std::numeric_limits<float>::epsilon() * 1e-5f))).epsilon(1e-6));
     CHECK(odestep::difference_increment(-400.0) ==
           doctest::Approx(20 * std::sqrt(std::numeric_limits<double>::epsilon())));
 }

@@ -237,7 +237,7 @@ TEST_CASE("backward Euler on RC discharge at h/RC = 10: Q_n = Q0 / (1 + h/RC)^n 
             const long double expected = std::pow(1.0L + static_cast<long double>(h / rc), -n);
             const long double rel = std::fabs(static_cast<long double>(y[0]) / expected - 1.0L);
             worst = std::max(worst, static_cast<T>(rel));
-            exact = exact && rel <= 8.0L * (n + 1) * std::numeric_limits<T>::epsilon();
+            exact = exact && rel <= 8.0L * (n + 1) * static_cast<long double>(std::numeric_limits<T>::epsilon());
         };
         const auto r =
             odestep::integrate_n_steps(odestep::backward_euler<state1<T>>{}, sys, q, T(0), h, steps, observe);
@@ -261,7 +261,7 @@ TEST_CASE("trapezoid on RC discharge at h/RC = 10: Q_n = Q0 ((1 - z/2) / (1 + z/
             const long double n = std::round(static_cast<long double>(t / h));
             const long double expected = std::pow(-2.0L / 3.0L, n);
             exact = exact && std::fabs(static_cast<long double>(y[0]) / expected - 1.0L) <=
-                                 8.0L * (n + 1) * std::numeric_limits<T>::epsilon();
+                                 8.0L * (n + 1) * static_cast<long double>(std::numeric_limits<T>::epsilon());
         };
         const auto r = odestep::integrate_n_steps(odestep::trapezoid<state1<T>>{}, sys, q, T(0), h, steps, observe);
         CHECK(r.status == odestep::status::ok);

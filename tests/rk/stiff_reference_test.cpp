@@ -184,7 +184,9 @@ TEST_CASE("Prothero-Robinson: full order at lambda = -1, reduced to the stage or
     // accurate method's error is then about e_s^T A^-1 Delta / (h lambda), Delta_i = O(h^(q+1)) the stages'
     // quadrature errors (q the stage order): O(h^q / |lambda|), tiny but of order q. A method with |R(oo)| = 1
     // (Gauss, midpoint, trapezoid) does not damp the stage errors: O(h^q) with q = 2 (Gauss 2, trapezoid 2) or
-    // the midpoint's 2 from its alternating sign (Hairer & Wanner, Solving ODE II, Sec. IV.15).
+    // the midpoint's 2 from its alternating sign (Hairer & Wanner, Solving ODE II, Sec. IV.15). The same steps for
+    // both lambdas, except Radau IIA at lambda = -1, which starts at 0.5 so that its finest error (1e-11) stays
+    // clear of the Newton tolerance.
     using s = state1<double>;
     CHECK(prothero_robinson_slope<odestep::backward_euler<s>>(-1, 100) == doctest::Approx(1).epsilon(0.05));
     CHECK(prothero_robinson_slope<odestep::backward_euler<s>>(-1e6, 100) == doctest::Approx(1).epsilon(0.05));
@@ -194,11 +196,11 @@ TEST_CASE("Prothero-Robinson: full order at lambda = -1, reduced to the stage or
     CHECK(prothero_robinson_slope<odestep::implicit_midpoint<s>>(-1e6, 100) == doctest::Approx(2).epsilon(0.05));
     CHECK(prothero_robinson_slope<odestep::gauss4<s>>(-1, 50) == doctest::Approx(4).epsilon(0.05));
     CHECK(prothero_robinson_slope<odestep::gauss4<s>>(-1e6, 50) == doctest::Approx(2).epsilon(0.05));
-    CHECK(prothero_robinson_slope<odestep::sdirk3<s>>(-1, 50) == doctest::Approx(3).epsilon(0.05));
+    CHECK(prothero_robinson_slope<odestep::sdirk3<s>>(-1, 100) == doctest::Approx(3).epsilon(0.05));
     CHECK(prothero_robinson_slope<odestep::sdirk3<s>>(-1e6, 100) == doctest::Approx(1).epsilon(0.12));
     CHECK(prothero_robinson_slope<odestep::radau_iia5<s>>(-1, 20) == doctest::Approx(5).epsilon(0.05));
     CHECK(prothero_robinson_slope<odestep::radau_iia5<s>>(-1e6, 40) == doctest::Approx(3).epsilon(0.05));
-    CHECK(prothero_robinson_slope<odestep::rodas3<s>>(-1, 50) == doctest::Approx(3).epsilon(0.05));
+    CHECK(prothero_robinson_slope<odestep::rodas3<s>>(-1, 100) == doctest::Approx(3).epsilon(0.05));
     CHECK(prothero_robinson_slope<odestep::rodas3<s>>(-1e6, 100) == doctest::Approx(1).epsilon(0.12));
 }
 
