@@ -154,7 +154,10 @@ TEST_CASE("implicit_rk: every table's stability function is its closed form (Pad
     stability_matches<tab::radau_iia5>(radau5_r);
 }
 
-TEST_CASE("implicit_rk: every method is A-stable: |R(z)| <= 1 on the imaginary axis and in the left half-plane") {
+// The two slowest cases (about 1 s and 2 s on an emulated Cortex-M4F, where double is software) are in the
+// "long" suite, which the emulated cores skip; everything else here runs there too.
+TEST_CASE("implicit_rk: every method is A-stable: |R(z)| <= 1 on the imaginary axis and in the left half-plane" *
+          doctest::test_suite("long")) {
     a_stable<tab::backward_euler>();
     a_stable<tab::trapezoid>();
     a_stable<tab::implicit_midpoint>();
@@ -200,7 +203,8 @@ TEST_CASE("implicit_rk: symplectic and time-reversible are computed from the tab
     CHECK(odestep::sdirk3<s>::iteration_matrix_size == 3);
 }
 
-TEST_CASE("implicit_rk: every method shows its order on a smooth problem with a closed form") {
+TEST_CASE("implicit_rk: every method shows its order on a smooth problem with a closed form" *
+          doctest::test_suite("long")) {
     using s = state3<double>;
     // t in [0, 10]; the step counts keep every error in the asymptotic range and far above the Newton tolerance.
     CHECK(observed_order<odestep::backward_euler<s>>(1000) == doctest::Approx(1.0).epsilon(0.03));

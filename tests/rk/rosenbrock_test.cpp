@@ -154,7 +154,8 @@ TEST_CASE("rosenbrock: RODAS3 is A-stable and L-stable, and a step on y' = lambd
     REQUIRE(odestep::integrate_n_steps(odestep::rodas3<state1<double>>{}, sys, q, 0.0, 5.0, 40).status ==
             odestep::status::ok);
     const long double expected = std::pow(rodas3_r(cplx(-10)).real(), 40.0L);
-    CHECK(std::fabs(static_cast<long double>(q[0]) / expected - 1) < 1e-13L);
+    // 40 steps of a few rounding errors each, through stage weights up to 4 (and long double is double on ARM)
+    CHECK(std::fabs(static_cast<long double>(q[0]) / expected - 1) < 1e-12L);
 }
 
 TEST_CASE("rosenbrock: RODAS3 shows order 3, autonomous and not (df/dt by differences)") {
