@@ -101,7 +101,7 @@ for core in cortex-m0plus cortex-m3 cortex-m4f cortex-m33; do
 done
 
 # --- 2 and 3: one translation unit per (core, type, optimisation) with a step() wrapper per stepper ---
-methods=$(sed -n 's/^template <class State> using [a-z0-9_]* = explicit_rk<tables::\([a-z0-9_]*\), State>;$/\1/p' \
+methods=$(sed -n 's/^using [a-z0-9_]* = explicit_rk<tables::\([a-z0-9_]*\), State>;$/\1/p' \
             "$root/include/odestep/rk/explicit_rk.hpp" | awk '!seen[$0]++')
 unit=$out/step_unit.cpp
 {
@@ -174,7 +174,7 @@ stiff_unit=$out/stiff_unit.cpp
 # stepper of newtonian.hpp, each on a stepper object kept by the caller between steps (the history-keeping
 # ones keep theirs there), and the caller-kept forms of the first-same-as-last splittings and of Beeman.
 # Compiled on their own, like the event loop, so that they change nothing in the rows above.
-splittings=$(sed -n 's/^template <class State> using \([a-z0-9_]*\) = splitting<tables::\([a-z0-9_]*\), State>;$/\1 \2/p' \
+splittings=$(sed -n 's/^using \([a-z0-9_]*\) = splitting<tables::\([a-z0-9_]*\), State>;$/\1 \2/p' \
                "$root/include/odestep/newtonian/splitting.hpp" | awk '!seen[$2]++ { print $1 }')
 newtonians=$(sed -n 's/^class \([a-z0-9_]*\) : public newtonian_traits<.*/\1/p' "$root/include/odestep/newtonian/classic.hpp")
 caller_kept=(velocity_verlet_caller_kept blanes_moan4_caller_kept beeman_caller_kept)

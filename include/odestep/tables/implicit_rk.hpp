@@ -28,8 +28,8 @@ namespace odestep::tables {
 /// (Euler 1768; Hairer & Wanner, Solving ODE II (HW II), Sec. IV.3; the Radau IIA method with s = 1.)
 struct backward_euler {
     static constexpr const char* name = "backward Euler";
-    static constexpr bool a_stable = true;
-    static constexpr bool l_stable = true;
+    static constexpr bool a_stable = true;  ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
+    static constexpr bool l_stable = true;  ///< A-stable and R(infinity) = 0 (tested from the table)
     template <class T>
     static constexpr butcher_tableau<T, 1> table{{{{T(1)}}}, {T(1)}, {T(1)}, {}, 1, {}};
 };
@@ -41,8 +41,8 @@ struct backward_euler {
 /// Lobatto IIIA method with s = 2, HW II Sec. IV.5.) The first stage is explicit: k_1 = f(t_n, y_n).
 struct trapezoid {
     static constexpr const char* name = "implicit trapezoid (Crank-Nicolson)";
-    static constexpr bool a_stable = true;
-    static constexpr bool l_stable = false;
+    static constexpr bool a_stable = true;   ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
+    static constexpr bool l_stable = false;  ///< |R(infinity)| = 1: stiff modes are not damped
     template <class T>
     static constexpr butcher_tableau<T, 2> table{
         {{{T(0), T(0)}, {T(1) / T(2), T(1) / T(2)}}}, {T(1) / T(2), T(1) / T(2)}, {T(0), T(1)}, {}, 2, {}};
@@ -53,8 +53,8 @@ struct trapezoid {
 /// Lubich & Wanner, Geometric Numerical Integration, Sec. VI.3).
 struct implicit_midpoint {
     static constexpr const char* name = "implicit midpoint";
-    static constexpr bool a_stable = true;
-    static constexpr bool l_stable = false;
+    static constexpr bool a_stable = true;   ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
+    static constexpr bool l_stable = false;  ///< |R(infinity)| = 1: stiff modes are not damped
     template <class T>
     static constexpr butcher_tableau<T, 1> table{{{{T(1) / T(2)}}}, {T(1)}, {T(1) / T(2)}, {}, 2, {}};
 };
@@ -65,8 +65,8 @@ struct implicit_midpoint {
 /// Sec. IV.5.)
 struct gauss4 {
     static constexpr const char* name = "Gauss-Legendre 4";
-    static constexpr bool a_stable = true;
-    static constexpr bool l_stable = false;
+    static constexpr bool a_stable = true;   ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
+    static constexpr bool l_stable = false;  ///< |R(infinity)| = 1: stiff modes are not damped
     template <class T>
     static constexpr butcher_tableau<T, 2> table{
         {{{T(1) / T(4), T(1) / T(4) - detail::sqrt3<T> / T(6)}, {T(1) / T(4) + detail::sqrt3<T> / T(6), T(1) / T(4)}}},
@@ -86,8 +86,9 @@ struct gauss4 {
 /// differential equations. A review", NASA/TM-2016-219173, which lists the same coefficients.)
 struct sdirk3 {
     static constexpr const char* name = "SDIRK 3 (Alexander, L-stable)";
-    static constexpr bool a_stable = true;
-    static constexpr bool l_stable = true;
+    static constexpr bool a_stable = true;  ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
+    static constexpr bool l_stable = true;  ///< A-stable and R(infinity) = 0 (tested from the table)
+    /// gamma, the diagonal entry of every stage, in T.
     template <class T>
     static constexpr T g = detail::alexander_gamma<T>;
     template <class T>
@@ -108,8 +109,8 @@ struct sdirk3 {
 /// Sec. IV.5, Table 5.6, p. 74 of the 2nd edition.)
 struct radau_iia5 {
     static constexpr const char* name = "Radau IIA 5";
-    static constexpr bool a_stable = true;
-    static constexpr bool l_stable = true;
+    static constexpr bool a_stable = true;  ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
+    static constexpr bool l_stable = true;  ///< A-stable and R(infinity) = 0 (tested from the table)
     template <class T>
     static constexpr butcher_tableau<T, 3> table{
         {{{(T(88) - T(7) * detail::sqrt6<T>) / T(360), (T(296) - T(169) * detail::sqrt6<T>) / T(1800),

@@ -60,8 +60,8 @@ namespace tables {
 /// evaluations of f, because stages 1 and 2 share theirs) and is exact in float.
 struct rodas3 {
     static constexpr const char* name = "RODAS3";
-    static constexpr bool a_stable = true;
-    static constexpr bool l_stable = true;
+    static constexpr bool a_stable = true;  ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
+    static constexpr bool l_stable = true;  ///< A-stable and R(infinity) = 0 (tested from the table)
     template <class T>
     static constexpr rosenbrock_tableau<T, 4> table{{{{T(0), T(0), T(0), T(0)},
                                                       {T(0), T(0), T(0), T(0)},
