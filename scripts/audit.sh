@@ -15,6 +15,8 @@
 # 3b. The same for the Newtonian steppers of symplectic.hpp and newtonian.hpp (x and v two states of 2, the
 #     same springs, undamped, as a force of position alone) and the Boris pusher (x and v of 3), their step()
 #     under the checks of 2 and 3 as well; no step unit calls the allocator or the C++ run-time.
+# 3c. The same for the implicit steppers (backward Euler, trapezoid, SDIRK 3, Radau IIA 5) and RODAS3 on the
+#     4-state system of 3, with their float steps checked for __aeabi_d* as in 2.
 #
 # Usage: scripts/audit.sh            Exits non-zero if a check fails. Needs arm-none-eabi-g++ (newlib) and
 # awk; qemu-system-arm to run the firmware image (skipped without it). Installs nothing.
@@ -156,6 +158,18 @@ extern "C" __attribute__((noinline, used)) odestep::status audit_step_rk4_one_ev
 }
 EVENTS
 } > "$event_unit"
+# The implicit and Rosenbrock steppers on the same 4-state system, Jacobian by differences (4 evaluations of f),
+# the default Newton policy (at most 10 iterations); compiled on their own, like the event loop.
+stiff_steppers=(backward_euler trapezoid sdirk3 radau_iia5 rodas3)
+stiff_unit=$out/stiff_unit.cpp
+{
+  sed -n '1,/^};/p' "$unit"
+  for m in "${stiff_steppers[@]}"; do
+    echo "extern \"C\" __attribute__((noinline, used)) odestep::status audit_step_$m(state& y, AUDIT_T t, AUDIT_T dt) {"
+    echo "  return odestep::$m<state>{}.step(two_masses{}, y, t, dt);"
+    echo "}"
+  done
+} > "$stiff_unit"
 # The Newtonian steppers: one step() per splitting (symplectic.hpp, aliases of one table once) and per
 # stepper of newtonian.hpp, each on a stepper object kept by the caller between steps (the history-keeping
 # ones keep theirs there), and the caller-kept forms of the first-same-as-last splittings and of Beeman.
@@ -311,13 +325,24 @@ for core in cortex-m4f cortex-m0plus; do
         cat "$out/events-$tag.log" >&2
         fail "$tag: the event unit does not compile"
       fi
+      stiff_object=$out/stiff-$tag.o
+      if ! arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" "$opt" -DAUDIT_T="$type" -fstack-usage \
+           -fcallgraph-info=su -c "$stiff_unit" -o "$stiff_object" 2> "$out/stiff-$tag.log"; then
+        cat "$out/stiff-$tag.log" >&2
+        fail "$tag: the implicit step unit does not compile"
+        rm -f "$stiff_object"
+      elif [[ $type == float ]]; then
+        stiff_doubles=$(arm-none-eabi-nm -u "$stiff_object" | awk 'NF > 1 {print $NF}' | grep -E '^__aeabi_d' | tr '\n' ' ')
+        [[ -z "$stiff_doubles" ]] || fail "$tag: float implicit steps call double-precision routines: $stiff_doubles"
+      fi
       while read -r method text stack helpers; do
         text_of[$method,$tag]=$text
         stack_of[$method,$tag]=$stack
         [[ $helpers == - ]] || helpers_seen+=" $tag:$helpers"
       done < <(measure "$object" "${object%.o}.ci"
                [[ -f "$events_object" ]] && measure "$events_object" "${events_object%.o}.ci"
-               [[ -f "$newton_object" ]] && measure "$newton_object" "${newton_object%.o}.ci")
+               [[ -f "$newton_object" ]] && measure "$newton_object" "${newton_object%.o}.ci"
+               [[ -f "$stiff_object" ]] && measure "$stiff_object" "${stiff_object%.o}.ci")
     done
   done
 done
@@ -389,6 +414,14 @@ table_row() {  # table_row METHOD LABEL
     esac
     table_row "$m" "$label"
   done
+  echo
+  echo "## 3c. Flash and stack of one step() of the implicit and Rosenbrock steppers (4 states), bytes"
+  echo
+  echo "Measured as in 3, on the same two masses and three springs; Jacobian by forward differences, the default Newton" \
+       "policy (newton<10>). The LU factorization and solve and the difference Jacobian are included."
+  echo
+  table_head
+  for m in "${stiff_steppers[@]}"; do table_row "$m" "$m"; done
   echo
   echo "Not counted: the compiler's run-time helpers the steps call (shared by every stepper):"
   tr ' ' '\n' <<< "$helpers_seen" | awk -F: 'NF == 2 { split($2, h, ","); for (i in h) set[$1] = set[$1] " " h[i] }

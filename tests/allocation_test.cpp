@@ -195,6 +195,54 @@ std::size_t allocations_of_event_calls() {
     return odestep_test::allocations() - before;
 }
 
+template <class T>
+std::size_t allocations_of_implicit_calls() {
+    using s = state3<T>;
+    const std::size_t before = odestep_test::allocations();
+    auto lorenz_jacobian = [](T, const s& x, odestep::jacobian_t<s>& j) {
+        j[0] = {T(-10), T(10), T(0)};
+        j[1] = {T(28) - x[2], T(-1), -x[0]};
+        j[2] = {x[1], x[0], T(-8) / T(3)};
+    };
+    auto run = [&](auto stepper) {
+        s y{T(1), T(1), T(1)};
+        // good steps: by differences and with the system's Jacobian, both loops
+        (void)odestep::integrate(stepper, lorenz{}, y, T(0), T(0.1), T(0.01), [](T, const s&) {});
+        (void)odestep::integrate_n_steps(stepper, odestep::with_jacobian(lorenz{}, lorenz_jacobian), y, T(0), T(0.01),
+                                         10);
+        // failing steps: NaN from f, NaN in J, a singular matrix, an iteration that does not converge
+        auto poison = [](T, const s&) { return s{std::numeric_limits<T>::quiet_NaN(), T(0), T(0)}; };
+        (void)stepper.step(poison, y, T(0), T(0.01));
+        auto nan_j = [](T, const s&, odestep::jacobian_t<s>& j) {
+            j = {};
+            j[0][0] = std::numeric_limits<T>::quiet_NaN();
+        };
+        (void)stepper.step(odestep::with_jacobian(lorenz{}, nan_j), y, T(0), T(0.01));
+        auto identity = [](T, const s& v) { return v; };
+        auto unit = [](T, const s&, odestep::jacobian_t<s>& j) {
+            j = {{{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}}};
+        };
+        (void)stepper.step(odestep::with_jacobian(identity, unit), y, T(0), T(1));
+        (void)stepper.step(odestep::with_jacobian(identity, unit), y, T(0), T(2));
+        auto cubic = [](T, const s& v) { return s{-v[0] * v[0] * v[0], T(0), T(0)}; };
+        (void)stepper.step(cubic, y, T(0), T(100));
+    };
+    run(odestep::backward_euler<s>{});
+    run(odestep::trapezoid<s>{});
+    run(odestep::implicit_midpoint<s>{});
+    run(odestep::gauss4<s>{});
+    run(odestep::sdirk3<s>{});
+    run(odestep::radau_iia5<s>{});
+    run(odestep::radau_iia5<s, odestep::fixed_newton<2>>{});
+    run(odestep::rodas3<s>{});
+    // and an event loop driving an implicit stepper
+    s y{T(1), T(1), T(1)};
+    auto g = [](T, const s& v) { return v[0] - T(5); };
+    (void)odestep::integrate(odestep::sdirk3<s>{}, lorenz{}, y, T(0), T(1), T(0.01),
+                             odestep::watch(odestep::make_event<s>(g, odestep::direction::rising)));
+    return odestep_test::allocations() - before;
+}
+
 }  // namespace
 
 TEST_CASE("allocation: the counter sees an allocation when there is one") {
@@ -235,4 +283,10 @@ TEST_CASE("allocation: the event loops do not allocate, in float, double or long
     CHECK(allocations_of_event_calls<float>() == 0);
     CHECK(allocations_of_event_calls<double>() == 0);
     CHECK(allocations_of_event_calls<long double>() == 0);
+}
+
+TEST_CASE("allocation: the implicit and Rosenbrock steppers do not allocate, good steps or failing ones") {
+    CHECK(allocations_of_implicit_calls<float>() == 0);
+    CHECK(allocations_of_implicit_calls<double>() == 0);
+    CHECK(allocations_of_implicit_calls<long double>() == 0);
 }

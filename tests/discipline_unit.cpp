@@ -117,6 +117,20 @@ T run_everything() {
             loop.tick(oscillators{}, y).status == odestep::status::ok)
             sum += y[0];
     };
+    // and the implicit and Rosenbrock steppers: their settings live in the objects, their work on the stack
+    auto add_implicit = [&](auto stepper) {
+        state4<T> y{T(1), T(0), T(1), T(0)};
+        if (odestep::integrate(stepper, oscillators{}, y, T(0), T(1), T(0.125)).status == odestep::status::ok)
+            sum += y[0];
+    };
+    add_implicit(odestep::backward_euler<state4<T>>{});
+    add_implicit(odestep::trapezoid<state4<T>>{});
+    add_implicit(odestep::implicit_midpoint<state4<T>>{});
+    add_implicit(odestep::gauss4<state4<T>>{});
+    add_implicit(odestep::sdirk3<state4<T>>{});
+    add_implicit(odestep::radau_iia5<state4<T>>{});
+    add_implicit(odestep::radau_iia5<state4<T>, odestep::fixed_newton<3>>{});
+    add_implicit(odestep::rodas3<state4<T>>{});
     events_with(odestep::bisection{});
     events_with(odestep::illinois{});
     events_with(odestep::anderson_bjorck{});

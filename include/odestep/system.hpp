@@ -3,6 +3,7 @@
 #ifndef ODESTEP_SYSTEM_HPP
 #define ODESTEP_SYSTEM_HPP
 
+#include <array>
 #include <type_traits>
 #include <utility>
 
@@ -40,6 +41,107 @@ inline constexpr bool is_returning_system_v = detail::returns_state<System, Stat
 /// A first-order system y' = f(t, y) in either accepted form.
 template <class System, class State>
 inline constexpr bool is_system_v = is_inplace_system_v<System, State> || is_returning_system_v<System, State>;
+
+// ---- the Jacobian of a first-order system, for the implicit methods
+
+/// The Jacobian of f at a state: dfdy[i][j] = d f_i / d y_j, an N x N std::array (std::array<State, N>).
+template <class State>
+using jacobian_t = std::array<State, state_traits<State>::size>;
+
+namespace detail {
+template <class System, class State, class T, class = void>
+struct inplace_jacobian : std::false_type {};
+template <class System, class State, class T>
+struct inplace_jacobian<System, State, T,
+                        std::void_t<decltype(std::declval<System&>().jacobian(
+                            std::declval<T>(), std::declval<const State&>(), std::declval<jacobian_t<State>&>()))>>
+    : std::true_type {};
+template <class System, class State, class T, class = void>
+struct returning_jacobian : std::false_type {};
+template <class System, class State, class T>
+struct returning_jacobian<System, State, T,
+                          std::enable_if_t<std::is_convertible_v<decltype(std::declval<System&>().jacobian(
+                                                                     std::declval<T>(), std::declval<const State&>())),
+                                                                 jacobian_t<State>>>> : std::true_type {};
+}  // namespace detail
+
+/// True when the system carries its Jacobian: a member `jacobian(t, y, dfdy)` writing d f / d y into an
+/// odestep::jacobian_t<State>, or `jacobian(t, y)` returning one. odestep::with_jacobian(f, J) makes such a
+/// system from two callables. The implicit steppers then call it once per step instead of approximating
+/// the Jacobian by differences (N evaluations of f); every other stepper and loop sees only f.
+template <class System, class State, class T = value_type_t<State>>
+inline constexpr bool has_jacobian_v =
+    detail::inplace_jacobian<System, State, T>::value || detail::returning_jacobian<System, State, T>::value;
+
+/// \brief A right-hand side f together with its Jacobian J, as one system object.
+///
+/// Made by odestep::with_jacobian. It is called as f (either form, whichever f has), so it goes wherever a
+/// system goes: `integrate`, `integrate_n_steps`, the event loops, any stepper. Its `jacobian(t, y, dfdy)`
+/// calls J as `J(t, y, dfdy)` (or `dfdy = J(t, y)`). A callable given as an lvalue is held by reference,
+/// one given as an rvalue (a lambda written in the call) is moved in, so the object never dangles.
+///
+/// Why one object and not a second argument to step(): the driving loops and the event loop call
+/// `stepper.step(f, y, t, dt)` for every stepper; a system that carries its Jacobian passes through all of
+/// them unchanged, and the choice between the user's J and differences is made at compile time.
+template <class F, class J>
+struct system_with_jacobian {
+    F f;    ///< the right-hand side, f(t, y) or f(t, y, dydt)
+    J jac;  ///< the Jacobian, J(t, y, dfdy) or dfdy = J(t, y)
+
+    /// dydt = f(t, y) (when f returns the derivative).
+    template <class T, class State>
+    constexpr auto operator()(T t, const State& y) -> decltype(std::declval<F&>()(t, y)) {
+        return f(t, y);
+    }
+    /// f(t, y, dydt) (when f writes the derivative).
+    template <class T, class State>
+    constexpr auto operator()(T t, const State& y, State& dydt) -> decltype(std::declval<F&>()(t, y, dydt)) {
+        return f(t, y, dydt);
+    }
+    /// The same through a const object (a callable held by reference is still called as it is).
+    template <class T, class State>
+    constexpr auto operator()(T t, const State& y) const -> decltype(std::declval<const F&>()(t, y)) {
+        return f(t, y);
+    }
+    /// The same through a const object.
+    template <class T, class State>
+    constexpr auto operator()(T t, const State& y, State& dydt) const
+        -> decltype(std::declval<const F&>()(t, y, dydt)) {
+        return f(t, y, dydt);
+    }
+    /// J(t, y, dfdy) (when J writes the Jacobian).
+    template <class T, class State, class M>
+    constexpr auto jacobian(T t, const State& y, M& dfdy) -> decltype(std::declval<J&>()(t, y, dfdy)) {
+        return jac(t, y, dfdy);
+    }
+    /// dfdy = J(t, y) (when J returns the Jacobian).
+    template <class T, class State>
+    constexpr auto jacobian(T t, const State& y) -> decltype(std::declval<J&>()(t, y)) {
+        return jac(t, y);
+    }
+    /// The same through a const object.
+    template <class T, class State, class M>
+    constexpr auto jacobian(T t, const State& y, M& dfdy) const -> decltype(std::declval<const J&>()(t, y, dfdy)) {
+        return jac(t, y, dfdy);
+    }
+    /// The same through a const object.
+    template <class T, class State>
+    constexpr auto jacobian(T t, const State& y) const -> decltype(std::declval<const J&>()(t, y)) {
+        return jac(t, y);
+    }
+};
+
+/// Pairs a right-hand side with its Jacobian, `J(T t, const State& y, odestep::jacobian_t<State>& dfdy)`
+/// writing dfdy[i][j] = d f_i / d y_j (or returning the matrix from `J(t, y)`):
+///
+/// \code
+/// auto sys = odestep::with_jacobian(f, [](double, const state& y, odestep::jacobian_t<state>& J) { ... });
+/// auto r = odestep::integrate(odestep::radau_iia5<state>{}, sys, y, 0.0, 40.0, 0.1);
+/// \endcode
+template <class F, class J>
+constexpr system_with_jacobian<F, J> with_jacobian(F&& f, J&& jacobian) {
+    return {std::forward<F>(f), std::forward<J>(jacobian)};
+}
 
 // ---- Newton's equations: x'' = a(t, x) or a(t, x, v)
 
@@ -91,6 +193,19 @@ constexpr void evaluate(System& f, T t, const State& y, State& dydt) {
         static_assert(is_system_v<System, State>,
                       "odestep: the right-hand side must be callable as `State f(T t, const State& y)` "
                       "or `void f(T t, const State& y, State& dydt)`, with State = std::array<T, N>");
+    }
+}
+
+// dfdy = the system's own Jacobian at (t, y), whichever form it has (only for has_jacobian_v systems).
+template <class System, class State, class T>
+constexpr void evaluate_jacobian(System& f, T t, const State& y, jacobian_t<State>& dfdy) {
+    if constexpr (inplace_jacobian<System, State, T>::value) {
+        f.jacobian(t, y, dfdy);
+    } else {
+        static_assert(returning_jacobian<System, State, T>::value,
+                      "odestep: the system's Jacobian must be callable as `jacobian(T t, const State& y, "
+                      "odestep::jacobian_t<State>& dfdy)` or `jacobian_t<State> jacobian(T t, const State& y)`");
+        dfdy = f.jacobian(t, y);
     }
 }
 

@@ -8,6 +8,7 @@
 #include <doctest/doctest.h>
 
 #include <odestep/tableaux.hpp>
+#include <odestep/tables/implicit_rk.hpp>
 
 #include <array>
 #include <cfloat>
@@ -140,7 +141,7 @@ void elementary_weight(const odestep::butcher_tableau<real, S, E>& tab, const tr
             for (std::size_t i = 0; i < S; ++i) {
                 real sum = real(0);
                 real size = real(0);
-                for (std::size_t j = 0; j < i; ++j) {
+                for (std::size_t j = 0; j < S; ++j) {  // the whole row: implicit tables too
                     sum += tab.a[i][j] * g[j];
                     size += magnitude(tab.a[i][j]) * g_size[j];
                 }
@@ -223,9 +224,12 @@ constexpr real published_precision<tab::dop853> = 1.0e-27L;
 template <class... Tags>
 struct table_list {};
 
+// The explicit tables, then the implicit ones (their conditions read the whole of a; the irrational
+// coefficients, sqrt 3, sqrt 6 and Alexander's gamma, are 40-digit literals, finer than any long double).
 using all_tables = table_list<tab::euler, tab::midpoint, tab::heun, tab::ralston2, tab::kutta3, tab::ssprk3, tab::rk4,
                               tab::rk38, tab::bogacki_shampine32, tab::fehlberg45, tab::cash_karp54,
-                              tab::dormand_prince54, tab::fehlberg78, tab::dop853>;
+                              tab::dormand_prince54, tab::fehlberg78, tab::dop853, tab::backward_euler, tab::trapezoid,
+                              tab::implicit_midpoint, tab::gauss4, tab::sdirk3, tab::radau_iia5>;
 
 template <class... Tags, class F>
 void for_each_table(table_list<Tags...>, F&& f) {

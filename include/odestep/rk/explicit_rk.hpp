@@ -102,6 +102,9 @@ private:
     static constexpr std::size_t S = table_type::stages;
     static constexpr std::size_t E = table_type::embedded;
     static_assert(is_consistent(tab), "odestep: the table's rows do not sum to c, or its weights to 1");
+    static_assert(is_explicit(tab),
+                  "odestep: explicit_rk needs an explicit table (a strictly lower triangular); an implicit table "
+                  "is stepped by odestep::implicit_rk (odestep/rk/implicit_rk.hpp)");
 
     // Stage i is needed when its weight is non-zero or a needed later stage reads it. With the error
     // estimate, a non-zero embedded weight also counts (b_i - bhat_i != 0 needs k_i).

@@ -10,14 +10,15 @@
 
 namespace odestep {
 
-/// An explicit Runge-Kutta method with S stages and E embedded weight vectors:
+/// A Runge-Kutta method with S stages and E embedded weight vectors:
 ///
-///     k_i     = f(t + c_i h, y + h * sum_{j<i} a_ij k_j)
+///     k_i     = f(t + c_i h, y + h * sum_j a_ij k_j)
 ///     y_{n+1} = y_n + h * sum_i b_i k_i                   (order `order`)
 ///     yhat_e  = y_n + h * sum_i bhat_e,i k_i              (order `embedded_order[e]`)
 ///
-/// Only the strictly lower triangle of `a` is read. The stepper's error estimate for vector e is
-/// y_{n+1} - yhat_e = h * sum_i (b_i - bhat_e,i) k_i.
+/// An explicit table (is_explicit: a strictly lower triangular) drives odestep::explicit_rk, which reads
+/// only that triangle; any other table is implicit and drives odestep::implicit_rk (rk/implicit_rk.hpp).
+/// The stepper's error estimate for vector e is y_{n+1} - yhat_e = h * sum_i (b_i - bhat_e,i) k_i.
 template <class T, std::size_t S, std::size_t E = 0>
 struct butcher_tableau {
     using value_type = T;
@@ -51,22 +52,97 @@ constexpr bool sums_to(const std::array<T, S>& v, std::size_t count, T target) n
     return abs_value(sum - target) <= tolerance;
 }
 
+// x == y to within a few rounding errors of terms of the given magnitude (the same allowance as sums_to).
+template <class T>
+constexpr bool nearly_equal(T x, T y, T magnitude) noexcept {
+    const T unit = std::numeric_limits<T>::epsilon() > T(1e-26L) ? std::numeric_limits<T>::epsilon() : T(1e-26L);
+    return abs_value(x - y) <= T(16) * unit * magnitude;
+}
+
 }  // namespace detail
 
-/// Row sums c_i = sum_j a_ij, the first node c_1 = 0 (explicit), and sum b = sum bhat_e = 1.
-/// The full order conditions (rooted trees) are checked by the test suite.
+/// Row sums c_i = sum_j a_ij (over the whole row, so for implicit tables too), and
+/// sum b = sum bhat_e = 1. The full order conditions (rooted trees) are checked by the test suite.
 template <class T, std::size_t S, std::size_t E>
 constexpr bool is_consistent(const butcher_tableau<T, S, E>& tab) noexcept {
-    if (tab.c[0] != T(0)) return false;
-    for (std::size_t i = 0; i < S; ++i) {
-        for (std::size_t j = i; j < S; ++j)
-            if (tab.a[i][j] != T(0)) return false;  // explicit: strictly lower triangular
-        if (!detail::sums_to(tab.a[i], i, tab.c[i])) return false;
-    }
+    for (std::size_t i = 0; i < S; ++i)
+        if (!detail::sums_to(tab.a[i], S, tab.c[i])) return false;
     if (!detail::sums_to(tab.b, S, T(1))) return false;
     for (std::size_t e = 0; e < E; ++e)
         if (!detail::sums_to(tab.bhat[e], S, T(1))) return false;
     return tab.order >= 1;
+}
+
+namespace detail {
+/// is_consistent for a table tag's table in float, double and long double (the tables' static_asserts).
+template <class Tag>
+constexpr bool consistent_in_every_type() noexcept {
+    return is_consistent(Tag::template table<float>) && is_consistent(Tag::template table<double>) &&
+           is_consistent(Tag::template table<long double>);
+}
+}  // namespace detail
+
+/// An explicit table: a strictly lower triangular (each stage reads only earlier ones), so c_1 = 0.
+template <class T, std::size_t S, std::size_t E>
+constexpr bool is_explicit(const butcher_tableau<T, S, E>& tab) noexcept {
+    for (std::size_t i = 0; i < S; ++i)
+        for (std::size_t j = i; j < S; ++j)
+            if (tab.a[i][j] != T(0)) return false;
+    return true;
+}
+
+/// A diagonally implicit table (DIRK): a lower triangular, so the stages can be solved one after the
+/// other, each an N-dimensional equation. Explicit tables are the special case of a zero diagonal.
+template <class T, std::size_t S, std::size_t E>
+constexpr bool is_lower_triangular(const butcher_tableau<T, S, E>& tab) noexcept {
+    for (std::size_t i = 0; i < S; ++i)
+        for (std::size_t j = i + 1; j < S; ++j)
+            if (tab.a[i][j] != T(0)) return false;
+    return true;
+}
+
+/// Stiffly accurate: b is the last row of a (exactly), so y_{n+1} is the last stage's value. With an
+/// A-stable table whose a is invertible this makes R(infinity) = 0 (Hairer & Wanner, Solving ODE II,
+/// Sec. IV.3).
+template <class T, std::size_t S, std::size_t E>
+constexpr bool is_stiffly_accurate(const butcher_tableau<T, S, E>& tab) noexcept {
+    for (std::size_t j = 0; j < S; ++j)
+        if (tab.b[j] != tab.a[S - 1][j]) return false;
+    return true;
+}
+
+/// Symplectic (for Hamiltonian systems in the form y' = f(y)): b_i a_ij + b_j a_ji = b_i b_j for all i, j
+/// (Cooper's condition; Sanz-Serna 1988; Hairer, Lubich & Wanner, Geometric Numerical Integration,
+/// Thm. VI.4.3), to within the rounding of the coefficients in T. No explicit table meets it.
+template <class T, std::size_t S, std::size_t E>
+constexpr bool is_symplectic(const butcher_tableau<T, S, E>& tab) noexcept {
+    for (std::size_t i = 0; i < S; ++i)
+        for (std::size_t j = 0; j < S; ++j) {
+            const T lhs = tab.b[i] * tab.a[i][j] + tab.b[j] * tab.a[j][i];
+            const T size = detail::abs_value(tab.b[i] * tab.a[i][j]) + detail::abs_value(tab.b[j] * tab.a[j][i]) +
+                           detail::abs_value(tab.b[i] * tab.b[j]);
+            if (!detail::nearly_equal(lhs, tab.b[i] * tab.b[j], size)) return false;
+        }
+    return true;
+}
+
+/// Symmetric (the step with -h undoes the step with h): a_{s+1-i, s+1-j} + a_ij = b_j, b_{s+1-j} = b_j
+/// and c_{s+1-i} = 1 - c_i (Hairer, Lubich & Wanner, Geometric Numerical Integration, Thm. V.2.3; stages
+/// numbered from 1), to within the rounding of the coefficients in T.
+template <class T, std::size_t S, std::size_t E>
+constexpr bool is_symmetric(const butcher_tableau<T, S, E>& tab) noexcept {
+    for (std::size_t i = 0; i < S; ++i) {
+        const std::size_t ri = S - 1 - i;
+        if (!detail::nearly_equal(tab.b[ri], tab.b[i], detail::abs_value(tab.b[i]))) return false;
+        if (!detail::nearly_equal(tab.c[ri], T(1) - tab.c[i], T(1))) return false;
+        for (std::size_t j = 0; j < S; ++j) {
+            const std::size_t rj = S - 1 - j;
+            const T size =
+                detail::abs_value(tab.a[ri][rj]) + detail::abs_value(tab.a[i][j]) + detail::abs_value(tab.b[j]);
+            if (!detail::nearly_equal(tab.a[ri][rj] + tab.a[i][j], tab.b[j], size)) return false;
+        }
+    }
+    return true;
 }
 
 }  // namespace odestep

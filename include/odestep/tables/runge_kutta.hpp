@@ -279,21 +279,11 @@ struct dop853 {
 // clang-format on
 }  // namespace odestep::tables
 
-namespace odestep::detail {
-
-template <class Tag>
-constexpr bool consistent_in_every_type() noexcept {
-    return is_consistent(Tag::template table<float>) && is_consistent(Tag::template table<double>) &&
-           is_consistent(Tag::template table<long double>);
-}
-
-}  // namespace odestep::detail
-
 namespace odestep::tables {
 // clang-format off  (the tables keep their published layout)
 
-// Every table is explicit, its nodes are the row sums of a, and every weight vector sums to 1, in each
-// floating type. The full order conditions (rooted trees) are checked by tests/order_conditions_test.cpp.
+// Every table's nodes are the row sums of a and every weight vector sums to 1, in each floating type
+// (explicit_rk also asserts that its table is explicit). The full order conditions (rooted trees) are checked by tests/order_conditions_test.cpp.
 static_assert(detail::consistent_in_every_type<rk4>(), "tables::rk4 is not consistent");
 static_assert(detail::consistent_in_every_type<euler>(), "tables::euler is not consistent");
 static_assert(detail::consistent_in_every_type<midpoint>(), "tables::midpoint is not consistent");

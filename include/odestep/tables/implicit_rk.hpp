@@ -1,0 +1,144 @@
+// odestep: the implicit Runge-Kutta tables. Each method is a tag type whose `table<T>` is a constexpr
+// butcher_tableau typed in T (the same type as the explicit tables, with a full matrix a), stepped by
+// odestep::implicit_rk (rk/implicit_rk.hpp). Rational coefficients are written T(p) / T(q); the irrational
+// ones (sqrt 3, sqrt 6, the root gamma of Alexander's cubic) as 40-digit long double literals, computed with
+// mpmath at 50 digits and rounded once to T.
+#ifndef ODESTEP_TABLES_IMPLICIT_RK_HPP
+#define ODESTEP_TABLES_IMPLICIT_RK_HPP
+
+#include "butcher.hpp"
+
+namespace odestep::detail {
+/// sqrt(3) and sqrt(6), to 40 digits.
+template <class T>
+inline constexpr T sqrt3 = T(1.732050807568877293527446341505872366943L);
+template <class T>
+inline constexpr T sqrt6 = T(2.449489742783178098197284074705891391966L);
+/// The root near 0.4359 of gamma^3 - 3 gamma^2 + (3/2) gamma - 1/6 = 0 (Alexander 1977; it makes the
+/// three-stage SDIRK of order 3 L-stable), to 40 digits.
+template <class T>
+inline constexpr T alexander_gamma = T(0.4358665215084589994160194511935568425293L);
+}  // namespace odestep::detail
+
+namespace odestep::tables {
+
+// clang-format off  (the tables keep their published layout)
+
+/// Backward (implicit) Euler: y_{n+1} = y_n + h f(t_{n+1}, y_{n+1}). Order 1, L-stable, stiffly accurate.
+/// (Euler 1768; Hairer & Wanner, Solving ODE II (HW II), Sec. IV.3; the Radau IIA method with s = 1.)
+struct backward_euler {
+    static constexpr const char* name = "backward Euler";
+    static constexpr bool a_stable = true;  ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
+    static constexpr bool l_stable = true;  ///< A-stable and R(infinity) = 0 (tested from the table)
+    template <class T>
+    static constexpr butcher_tableau<T, 1> table{{{{T(1)}}}, {T(1)}, {T(1)}, {}, 1, {}};
+};
+
+/// The implicit trapezoidal rule (Crank-Nicolson; the Adams-Moulton method of order 2):
+/// y_{n+1} = y_n + h/2 (f(t_n, y_n) + f(t_{n+1}, y_{n+1})). Order 2, A-stable with |R(infinity)| = 1
+/// (stiff components are not damped: they flip sign every step), symmetric, stiffly accurate.
+/// (Crank & Nicolson 1947, Proc. Camb. Phil. Soc. 43, 50-67; HW II Sec. IV.3; as a Runge-Kutta method the
+/// Lobatto IIIA method with s = 2, HW II Sec. IV.5.) The first stage is explicit: k_1 = f(t_n, y_n).
+struct trapezoid {
+    static constexpr const char* name = "implicit trapezoid (Crank-Nicolson)";
+    static constexpr bool a_stable = true;   ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
+    static constexpr bool l_stable = false;  ///< |R(infinity)| = 1: stiff modes are not damped
+    template <class T>
+    static constexpr butcher_tableau<T, 2> table{
+        {{{T(0), T(0)}, {T(1) / T(2), T(1) / T(2)}}}, {T(1) / T(2), T(1) / T(2)}, {T(0), T(1)}, {}, 2, {}};
+};
+
+/// The implicit midpoint rule: y_{n+1} = y_n + h f(t_n + h/2, (y_n + y_{n+1}) / 2). Order 2, A-stable,
+/// |R(infinity)| = 1, symmetric and symplectic (the Gauss method with s = 1; HW II Sec. IV.5; Hairer,
+/// Lubich & Wanner, Geometric Numerical Integration, Sec. VI.3).
+struct implicit_midpoint {
+    static constexpr const char* name = "implicit midpoint";
+    static constexpr bool a_stable = true;   ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
+    static constexpr bool l_stable = false;  ///< |R(infinity)| = 1: stiff modes are not damped
+    template <class T>
+    static constexpr butcher_tableau<T, 1> table{{{{T(1) / T(2)}}}, {T(1)}, {T(1) / T(2)}, {}, 2, {}};
+};
+
+/// The two-stage Gauss-Legendre method: order 4 (2s), A-stable, |R(infinity)| = 1, symmetric and
+/// symplectic; stage order 2. (Hammer & Hollingsworth 1955, Math. Tables Aids Comput. 9, 92-96;
+/// Butcher 1964, Math. Comp. 18, 50-64; Hairer, Norsett & Wanner, Solving ODE I, Sec. II.7; HW II
+/// Sec. IV.5.)
+struct gauss4 {
+    static constexpr const char* name = "Gauss-Legendre 4";
+    static constexpr bool a_stable = true;   ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
+    static constexpr bool l_stable = false;  ///< |R(infinity)| = 1: stiff modes are not damped
+    template <class T>
+    static constexpr butcher_tableau<T, 2> table{
+        {{{T(1) / T(4), T(1) / T(4) - detail::sqrt3<T> / T(6)}, {T(1) / T(4) + detail::sqrt3<T> / T(6), T(1) / T(4)}}},
+        {T(1) / T(2), T(1) / T(2)},
+        {T(1) / T(2) - detail::sqrt3<T> / T(6), T(1) / T(2) + detail::sqrt3<T> / T(6)},
+        {},
+        4,
+        {}};
+};
+
+/// Alexander's three-stage SDIRK: order 3, L-stable, stiffly accurate (b is the last row of a), every
+/// diagonal entry gamma = 0.43586652150845899941... (the root of gamma^3 - 3 gamma^2 + 3/2 gamma - 1/6
+/// that makes R(infinity) = 0 with A-stability). a_21 = (1 - gamma)/2, a_31 = -(6 gamma^2 - 16 gamma + 1)/4,
+/// a_32 = (6 gamma^2 - 20 gamma + 5)/4, c = (gamma, (1 + gamma)/2, 1); stage order 1. (R. Alexander 1977,
+/// "Diagonally implicit Runge-Kutta methods for stiff O.D.E.'s", SIAM J. Numer. Anal. 14, 1006-1021;
+/// HW II Sec. IV.6; Kennedy & Carpenter 2016, "Diagonally implicit Runge-Kutta methods for ordinary
+/// differential equations. A review", NASA/TM-2016-219173, which lists the same coefficients.)
+struct sdirk3 {
+    static constexpr const char* name = "SDIRK 3 (Alexander, L-stable)";
+    static constexpr bool a_stable = true;  ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
+    static constexpr bool l_stable = true;  ///< A-stable and R(infinity) = 0 (tested from the table)
+    /// gamma, the diagonal entry of every stage, in T.
+    template <class T>
+    static constexpr T g = detail::alexander_gamma<T>;
+    template <class T>
+    static constexpr butcher_tableau<T, 3> table{
+        {{{g<T>, T(0), T(0)},
+          {(T(1) - g<T>) / T(2), g<T>, T(0)},
+          {-(T(6) * g<T> * g<T> - T(16) * g<T> + T(1)) / T(4), (T(6) * g<T> * g<T> - T(20) * g<T> + T(5)) / T(4),
+           g<T>}}},
+        {-(T(6) * g<T> * g<T> - T(16) * g<T> + T(1)) / T(4), (T(6) * g<T> * g<T> - T(20) * g<T> + T(5)) / T(4), g<T>},
+        {g<T>, (T(1) + g<T>) / T(2), T(1)},
+        {},
+        3,
+        {}};
+};
+
+/// Radau IIA with three stages: order 5 (2s - 1), L-stable, stiffly accurate, stage order 3; the method of
+/// Hairer & Wanner's RADAU5. (Ehle 1969, Research Report CSRR 2010, Univ. Waterloo; Butcher 1964; HW II
+/// Sec. IV.5, Table 5.6, p. 74 of the 2nd edition.)
+struct radau_iia5 {
+    static constexpr const char* name = "Radau IIA 5";
+    static constexpr bool a_stable = true;  ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
+    static constexpr bool l_stable = true;  ///< A-stable and R(infinity) = 0 (tested from the table)
+    template <class T>
+    static constexpr butcher_tableau<T, 3> table{
+        {{{(T(88) - T(7) * detail::sqrt6<T>) / T(360), (T(296) - T(169) * detail::sqrt6<T>) / T(1800),
+           (T(-2) + T(3) * detail::sqrt6<T>) / T(225)},
+          {(T(296) + T(169) * detail::sqrt6<T>) / T(1800), (T(88) + T(7) * detail::sqrt6<T>) / T(360),
+           (T(-2) - T(3) * detail::sqrt6<T>) / T(225)},
+          {(T(16) - detail::sqrt6<T>) / T(36), (T(16) + detail::sqrt6<T>) / T(36), T(1) / T(9)}}},
+        {(T(16) - detail::sqrt6<T>) / T(36), (T(16) + detail::sqrt6<T>) / T(36), T(1) / T(9)},
+        {(T(4) - detail::sqrt6<T>) / T(10), (T(4) + detail::sqrt6<T>) / T(10), T(1)},
+        {},
+        5,
+        {}};
+};
+
+/// The implicit trapezoid under the name numerical analysts of PDEs use.
+using crank_nicolson = trapezoid;
+
+// Every table's nodes are the row sums of a and its weights sum to 1, in each floating type. The order
+// conditions, the stability functions and the symplectic and symmetric structure are checked by the tests
+// (tests/tables/order_conditions_test.cpp, tests/rk/implicit_rk_test.cpp).
+static_assert(detail::consistent_in_every_type<backward_euler>(), "tables::backward_euler is not consistent");
+static_assert(detail::consistent_in_every_type<trapezoid>(), "tables::trapezoid is not consistent");
+static_assert(detail::consistent_in_every_type<implicit_midpoint>(), "tables::implicit_midpoint is not consistent");
+static_assert(detail::consistent_in_every_type<gauss4>(), "tables::gauss4 is not consistent");
+static_assert(detail::consistent_in_every_type<sdirk3>(), "tables::sdirk3 is not consistent");
+static_assert(detail::consistent_in_every_type<radau_iia5>(), "tables::radau_iia5 is not consistent");
+
+// clang-format on
+}  // namespace odestep::tables
+
+#endif

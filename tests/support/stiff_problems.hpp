@@ -1,0 +1,135 @@
+// Stiff test problems shared by the implicit and Rosenbrock tests, with their Jacobians and the published
+// reference values they are checked against.
+#ifndef ODESTEP_TESTS_STIFF_PROBLEMS_HPP
+#define ODESTEP_TESTS_STIFF_PROBLEMS_HPP
+
+#include <odestep/odestep.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+namespace odestep_test {
+
+// ---- Robertson's chemical kinetics (Robertson 1966; Hairer & Wanner, Solving ODE II, Sec. IV.1, (1.3)):
+//   y1' = -0.04 y1 + 1e4 y2 y3,  y2' = 0.04 y1 - 1e4 y2 y3 - 3e7 y2^2,  y3' = 3e7 y2^2,  y(0) = (1, 0, 0).
+// y1 + y2 + y3 = 1 is a linear invariant, which every Runge-Kutta and Rosenbrock method keeps.
+template <class T>
+using state3 = std::array<T, 3>;
+
+struct robertson {
+    template <class T>
+    void operator()(T, const state3<T>& y, state3<T>& d) const noexcept {
+        d[0] = T(-0.04) * y[0] + T(1e4) * y[1] * y[2];
+        d[2] = T(3e7) * y[1] * y[1];
+        d[1] = -d[0] - d[2];
+    }
+};
+struct robertson_jacobian {
+    template <class T>
+    void operator()(T, const state3<T>& y, odestep::jacobian_t<state3<T>>& j) const noexcept {
+        j[0] = {T(-0.04), T(1e4) * y[2], T(1e4) * y[1]};
+        j[2] = {T(0), T(6e7) * y[1], T(0)};
+        j[1] = {-j[0][0] - j[2][0], -j[0][1] - j[2][1], -j[0][2] - j[2][2]};
+    }
+};
+
+// Reference values at t = 40, as Hairer & Wanner give them for this problem (Solving ODE II; the same ten
+// digits are quoted by every stiff-solver test suite that uses them).
+constexpr std::array<double, 3> robertson_at_40{0.7158270687, 9.185534764e-6, 0.2841637457};
+// At t = 1e11: the Test Set for IVP Solvers (F. Mazzia and C. Magherini, release 2.4, University of Bari,
+// 2008), problem ROBER, computed with RADAU5 in extended precision.
+constexpr std::array<double, 3> robertson_at_1e11{0.2083340149701255e-7, 0.8333360770334713e-13, 0.9999999791665050};
+
+// A fixed-step schedule over [0, t_end]: phases whose step grows with t (a fixed-step user's way through the
+// initial layer, where y2 rises from 0 to 3.6e-5 within 1e-4 s; at t = 0 the Jacobian does not yet see the
+// 3e7 y2^2 term, so a first step of 0.1 from y2 = 0 cannot converge with a Jacobian frozen there). `per_phase`
+// steps in each phase [1e-5 10^k, 1e-5 10^(k+1)] after a first phase [0, 1e-5] of `per_phase` steps too.
+template <class Stepper, class System, class T>
+odestep::integrate_result<T> robertson_schedule(const Stepper& stepper, System&& f, state3<T>& y, T t_end,
+                                                std::size_t per_phase, std::size_t* steps = nullptr) {
+    T t = T(0);
+    T end = T(1e-5);
+    odestep::integrate_result<T> r{odestep::status::ok, T(0), 0};
+    std::size_t total = 0;
+    for (;;) {
+        if (end > t_end) end = t_end;
+        r = odestep::integrate(stepper, f, y, t, end, (end - t) / static_cast<T>(per_phase));
+        total += r.steps;
+        if (r.status != odestep::status::ok || end == t_end) break;
+        t = end;
+        end = end * T(10);
+    }
+    if (steps != nullptr) *steps = total;
+    return r;
+}
+
+// ---- RC discharge: Q' = -Q / RC. Backward Euler gives Q_n = Q0 / (1 + h/RC)^n, the trapezoid
+// Q0 ((1 - z/2) / (1 + z/2))^n with z = h/RC: the methods' stability functions at -h/RC.
+template <class T>
+using state1 = std::array<T, 1>;
+
+template <class T>
+struct rc_circuit {
+    T rc;
+    state1<T> operator()(T, const state1<T>& q) const noexcept { return {-q[0] / rc}; }
+};
+template <class T>
+struct rc_jacobian {
+    T rc;
+    void operator()(T, const state1<T>&, odestep::jacobian_t<state1<T>>& j) const noexcept { j[0][0] = T(-1) / rc; }
+};
+
+// ---- A smooth nonlinear problem with a closed form (the explicit methods' order test):
+//   y0' = y0 y1, y1' = -y2, y2' = y1, y(0) = (1, 1, 0)  =>  y1 = cos t, y2 = sin t, y0 = exp(sin t).
+struct exp_sin {
+    template <class T>
+    void operator()(T, const state3<T>& y, state3<T>& d) const noexcept {
+        d[0] = y[0] * y[1];
+        d[1] = -y[2];
+        d[2] = y[1];
+    }
+};
+struct exp_sin_jacobian {
+    template <class T>
+    void operator()(T, const state3<T>& y, odestep::jacobian_t<state3<T>>& j) const noexcept {
+        j[0] = {y[1], y[0], T(0)};
+        j[1] = {T(0), T(0), T(-1)};
+        j[2] = {T(0), T(1), T(0)};
+    }
+};
+
+// ---- Prothero-Robinson (Prothero & Robinson 1974, Math. Comp. 28, 145-162; Hairer & Wanner, Solving ODE II,
+// Sec. IV.15): y' = L (y - phi(t)) + phi'(t), y(0) = phi(0), solution y = phi(t) = sin t for every L.
+template <class T>
+struct prothero_robinson {
+    T lambda;
+    state1<T> operator()(T t, const state1<T>& y) const noexcept {
+        return {lambda * (y[0] - std::sin(t)) + std::cos(t)};
+    }
+};
+template <class T>
+struct prothero_robinson_jacobian {
+    T lambda;
+    void operator()(T, const state1<T>&, odestep::jacobian_t<state1<T>>& j) const noexcept { j[0][0] = lambda; }
+};
+
+// Least-squares slope of log(error) against log(h) for errors at h, h/2, h/4, ...
+template <std::size_t K>
+double fitted_slope(const std::array<double, K>& errors) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (std::size_t i = 0; i < K; ++i) {
+        const double x = -std::log(2.0) * static_cast<double>(i);
+        const double yv = std::log(errors[i]);
+        sx += x;
+        sy += yv;
+        sxx += x * x;
+        sxy += x * yv;
+    }
+    const double n = static_cast<double>(K);
+    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+}  // namespace odestep_test
+
+#endif
