@@ -40,7 +40,8 @@ struct odeint_rhs {
     void operator()(const ublas::vector<double>& y, ublas::vector<double>& d, double) const { robertson<double>(y, d); }
 };
 struct odeint_jac {
-    void operator()(const ublas::vector<double>& y, ublas::matrix<double>& j, double, ublas::vector<double>& dfdt) const {
+    void operator()(const ublas::vector<double>& y, ublas::matrix<double>& j, double,
+                    ublas::vector<double>& dfdt) const {
         robertson_jacobian<double>(y, j);
         dfdt[0] = dfdt[1] = dfdt[2] = 0;
     }

@@ -35,10 +35,13 @@ constexpr auto jac = [](double, const State& y, Jac& j) {
 const auto sys = odestep::with_jacobian(rhs, jac);
 
 struct odeint_rhs {
-    void operator()(const ublas::vector<double>& y, ublas::vector<double>& d, double) const { van_der_pol<double>(y, d); }
+    void operator()(const ublas::vector<double>& y, ublas::vector<double>& d, double) const {
+        van_der_pol<double>(y, d);
+    }
 };
 struct odeint_jac {
-    void operator()(const ublas::vector<double>& y, ublas::matrix<double>& j, double, ublas::vector<double>& dfdt) const {
+    void operator()(const ublas::vector<double>& y, ublas::matrix<double>& j, double,
+                    ublas::vector<double>& dfdt) const {
         van_der_pol_jacobian<double>(y, j);
         dfdt[0] = dfdt[1] = 0;
     }

@@ -85,6 +85,9 @@ TEST_CASE("stepper: every stepper of the library publishes the one trait set") {
     static_assert(!odestep::euler_cromer<s2>::time_reversible && odestep::boris<s3>::time_reversible);
     static_assert(odestep::euler_cromer<s2>::velocity_forces && !odestep::half_step<s2>::velocity_forces);
     static_assert(!odestep::rk4<s2>::velocity_forces && !odestep::rk4<s2>::implicit);
+    static_assert(odestep::radau_iia5<s2>::implicit && odestep::rodas3<s2>::implicit);
+    static_assert(odestep::gauss4<s2>::symplectic && odestep::gauss4<s2>::time_reversible);
+    static_assert(!odestep::backward_euler<s2>::symplectic && !odestep::sdirk3<s2>::time_reversible);
     static_assert(odestep::newtonian_euler_richardson<s2>::error_estimate &&
                   odestep::newtonian_euler_richardson<s2>::embedded_order == 1);
     static_assert(odestep::dormand_prince54<s2>::rhs_evals_per_step == 6 &&
