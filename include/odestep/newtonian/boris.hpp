@@ -106,23 +106,34 @@ struct boris_ops {
 template <class State>
 class boris : public stepper_defaults<State> {
 public:
+    /// The state, std::array<T, N>.
     using state_type = State;
+    /// The scalar type T.
     using value_type = value_type_t<State>;
     static_assert(detail::is_boris_state_v<State>, "odestep: the Boris pusher needs State = std::array<T, 3>");
 
+    /// The order of the global error (trait; see odestep::stepper_defaults).
     static constexpr int order = 2;
+    /// The former name of rhs_evals_per_step.
     [[deprecated("odestep: use rhs_evals_per_step")]] static constexpr std::size_t field_evals_per_step = 1;
+    /// The most evaluations of the right-hand side one step makes (trait; see odestep::stepper_defaults).
     static constexpr std::size_t rhs_evals_per_step = 1;
+    /// Symplectic with a force of position alone (trait; see odestep::stepper_defaults).
     static constexpr bool symplectic = false;  // volume preserving, not symplectic (Qin et al. 2013)
+    /// The map preserves phase-space volume.
     static constexpr bool volume_preserving = true;
+    /// The step with -dt undoes the step with dt (trait; see odestep::stepper_defaults).
     static constexpr bool time_reversible = true;
+    /// No step needs a state prepared by another call (trait; see odestep::stepper_defaults).
     static constexpr bool self_starting = false;  // v must be staggered first
+    /// The form of system the stepper takes (trait; see odestep::stepper_defaults).
     static constexpr system_form system = system_form::charged_particle;
 
     /// q/m = 1.
     constexpr boris() noexcept = default;
     /// The particle's charge-to-mass ratio q/m (negative for an electron).
     explicit constexpr boris(value_type charge_to_mass) noexcept : qm_(charge_to_mass) {}
+    /// q/m.
     constexpr value_type charge_to_mass() const noexcept { return qm_; }
 
     /// (x_n, v_{n-1/2}) at t = t_n -> (x_{n+1}, v_{n+1/2}). On `status::non_finite` x and v are unchanged.
@@ -199,17 +210,27 @@ private:
 template <class State>
 class boris_relativistic : public stepper_defaults<State> {
 public:
+    /// The state, std::array<T, N>.
     using state_type = State;
+    /// The scalar type T.
     using value_type = value_type_t<State>;
     static_assert(detail::is_boris_state_v<State>, "odestep: the Boris pusher needs State = std::array<T, 3>");
 
+    /// The order of the global error (trait; see odestep::stepper_defaults).
     static constexpr int order = 2;
+    /// The former name of rhs_evals_per_step.
     [[deprecated("odestep: use rhs_evals_per_step")]] static constexpr std::size_t field_evals_per_step = 1;
+    /// The most evaluations of the right-hand side one step makes (trait; see odestep::stepper_defaults).
     static constexpr std::size_t rhs_evals_per_step = 1;
+    /// Symplectic with a force of position alone (trait; see odestep::stepper_defaults).
     static constexpr bool symplectic = false;
+    /// The map preserves phase-space volume.
     static constexpr bool volume_preserving = true;
+    /// The step with -dt undoes the step with dt (trait; see odestep::stepper_defaults).
     static constexpr bool time_reversible = true;
+    /// No step needs a state prepared by another call (trait; see odestep::stepper_defaults).
     static constexpr bool self_starting = false;  // u must be staggered first
+    /// The form of system the stepper takes (trait; see odestep::stepper_defaults).
     static constexpr system_form system = system_form::charged_particle;
 
     /// q/m = 1 and c = 1.
@@ -217,7 +238,9 @@ public:
     /// The charge-to-rest-mass ratio q/m and the speed of light c, in the units of the fields and x.
     constexpr boris_relativistic(value_type charge_to_mass, value_type speed_of_light) noexcept
         : qm_(charge_to_mass), c_(speed_of_light), inv_c2_(value_type(1) / (speed_of_light * speed_of_light)) {}
+    /// q/m.
     constexpr value_type charge_to_mass() const noexcept { return qm_; }
+    /// c.
     constexpr value_type speed_of_light() const noexcept { return c_; }
 
     /// gamma = sqrt(1 + |u|^2 / c^2).

@@ -101,8 +101,11 @@ struct splitting_cache<State, true> {
 template <class Method, class State>
 class splitting : public stepper_defaults<State> {
 public:
+    /// The state, std::array<T, N>.
     using state_type = State;
+    /// The scalar type T.
     using value_type = value_type_t<State>;
+    /// The method (table tag) type.
     using method_type = Method;
 
 private:
@@ -119,16 +122,22 @@ private:
     static constexpr bool lazy_velocity = plan::is_kick(plan::first) && !fsal;
 
 public:
+    /// The order of the global error (trait; see odestep::stepper_defaults).
     static constexpr int order = plan::tab.order;
     /// Kicks per step.
     static constexpr std::size_t stages = plan::kicks;
     /// Evaluations of a in one step, the most it makes (first same as last: the first step, or the first
     /// after reset(); the others make one fewer).
     [[deprecated("odestep: use rhs_evals_per_step")]] static constexpr std::size_t accelerations_per_step = plan::kicks;
+    /// The most evaluations of the right-hand side one step makes (trait; see odestep::stepper_defaults).
     static constexpr std::size_t rhs_evals_per_step = plan::kicks;
+    /// The last kick's acceleration is the next step's first (kept between steps).
     static constexpr bool first_same_as_last = fsal;
+    /// Symplectic with a force of position alone (trait; see odestep::stepper_defaults).
     static constexpr bool symplectic = true;
+    /// The step with -dt undoes the step with dt (trait; see odestep::stepper_defaults).
     static constexpr bool time_reversible = plan::tab.time_reversible;
+    /// The form of system the stepper takes (trait; see odestep::stepper_defaults).
     static constexpr system_form system = system_form::newtonian;
     /// A force of position and velocity, a(t, x, v), is accepted: each kick evaluates it with the velocity
     /// at hand (the one before the kick). The method is then not symplectic (is_symplectic_with_v says so)

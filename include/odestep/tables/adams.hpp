@@ -21,13 +21,16 @@ template <class T, std::size_t K, std::size_t C = 0>
 struct adams_table {
     static_assert(K >= 2, "odestep: an Adams table needs at least two steps (one step is forward Euler)");
     static_assert(C == 0 || C == K, "odestep: the corrector has as many weights as the predictor, or none");
+    /// The scalar type T.
     using value_type = T;
+    /// How many steps the method reads (k).
     static constexpr std::size_t steps = K;
+    /// Whether the table has a corrector.
     static constexpr bool has_corrector = C > 0;
 
     std::array<T, K> beta{};   ///< weights of f_n, f_{n-1}, ..., f_{n-k+1}
     std::array<T, C> gamma{};  ///< weights of f_{n+1} (at the predicted state), f_n, ..., f_{n-k+2}
-    int order = 0;
+    int order = 0;             ///< the order of the method
 };
 
 /// The tables. Each is a tag type whose `table<T>` is typed in T, written as exact rationals T(p) / T(q).
@@ -42,21 +45,27 @@ namespace tables {
 
 /// Two-step Adams-Bashforth, order 2:  y_{n+1} = y_n + h (3 f_n - f_{n-1}) / 2.
 struct bashforth2 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Adams-Bashforth 2";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr adams_table<T, 2> table{{T(3) / T(2), T(-1) / T(2)}, {}, 2};
 };
 
 /// Three-step Adams-Bashforth, order 3:  y_{n+1} = y_n + h (23 f_n - 16 f_{n-1} + 5 f_{n-2}) / 12.
 struct bashforth3 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Adams-Bashforth 3";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr adams_table<T, 3> table{{T(23) / T(12), T(-16) / T(12), T(5) / T(12)}, {}, 3};
 };
 
 /// Four-step Adams-Bashforth, order 4:  y_{n+1} = y_n + h (55 f_n - 59 f_{n-1} + 37 f_{n-2} - 9 f_{n-3}) / 24.
 struct bashforth4 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Adams-Bashforth 4";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr adams_table<T, 4> table{{T(55) / T(24), T(-59) / T(24), T(37) / T(24), T(-9) / T(24)}, {}, 4};
 };
@@ -64,7 +73,9 @@ struct bashforth4 {
 /// Five-step Adams-Bashforth, order 5:
 ///     y_{n+1} = y_n + h (1901 f_n - 2774 f_{n-1} + 2616 f_{n-2} - 1274 f_{n-3} + 251 f_{n-4}) / 720.
 struct bashforth5 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Adams-Bashforth 5";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr adams_table<T, 5> table{
         {T(1901) / T(720), T(-2774) / T(720), T(2616) / T(720), T(-1274) / T(720), T(251) / T(720)}, {}, 5};
@@ -75,7 +86,9 @@ struct bashforth5 {
 ///     p       = y_n + h (55 f_n - 59 f_{n-1} + 37 f_{n-2} - 9 f_{n-3}) / 24
 ///     y_{n+1} = y_n + h (9 f(t_{n+1}, p) + 19 f_n - 5 f_{n-1} + f_{n-2}) / 24
 struct bashforth_moulton4 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Adams-Bashforth-Moulton 4 (PECE)";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr adams_table<T, 4, 4> table{{T(55) / T(24), T(-59) / T(24), T(37) / T(24), T(-9) / T(24)},
                                                 {T(9) / T(24), T(19) / T(24), T(-5) / T(24), T(1) / T(24)},

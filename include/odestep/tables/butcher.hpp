@@ -21,16 +21,19 @@ namespace odestep {
 /// The stepper's error estimate for vector e is y_{n+1} - yhat_e = h * sum_i (b_i - bhat_e,i) k_i.
 template <class T, std::size_t S, std::size_t E = 0>
 struct butcher_tableau {
+    /// The scalar type T.
     using value_type = T;
+    /// The number of stages s.
     static constexpr std::size_t stages = S;
+    /// The number of embedded weight vectors.
     static constexpr std::size_t embedded = E;
 
-    std::array<std::array<T, S>, S> a{};
-    std::array<T, S> b{};
-    std::array<T, S> c{};
-    std::array<std::array<T, S>, E> bhat{};
-    int order = 0;
-    std::array<int, E> embedded_order{};
+    std::array<std::array<T, S>, S> a{};     ///< the stage coefficients a_ij
+    std::array<T, S> b{};                    ///< the weights b_i of the solution
+    std::array<T, S> c{};                    ///< the nodes c_i (stage times t + c_i h)
+    std::array<std::array<T, S>, E> bhat{};  ///< the weights of each embedded solution
+    int order = 0;                           ///< the order of the solution
+    std::array<int, E> embedded_order{};     ///< the order of each embedded solution
 };
 
 namespace detail {

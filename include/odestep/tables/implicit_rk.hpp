@@ -27,9 +27,11 @@ namespace odestep::tables {
 /// Backward (implicit) Euler: y_{n+1} = y_n + h f(t_{n+1}, y_{n+1}). Order 1, L-stable, stiffly accurate.
 /// (Euler 1768; Hairer & Wanner, Solving ODE II (HW II), Sec. IV.3; the Radau IIA method with s = 1.)
 struct backward_euler {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "backward Euler";
     static constexpr bool a_stable = true;  ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
     static constexpr bool l_stable = true;  ///< A-stable and R(infinity) = 0 (tested from the table)
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 1> table{{{{T(1)}}}, {T(1)}, {T(1)}, {}, 1, {}};
 };
@@ -40,9 +42,11 @@ struct backward_euler {
 /// (Crank & Nicolson 1947, Proc. Camb. Phil. Soc. 43, 50-67; HW II Sec. IV.3; as a Runge-Kutta method the
 /// Lobatto IIIA method with s = 2, HW II Sec. IV.5.) The first stage is explicit: k_1 = f(t_n, y_n).
 struct trapezoid {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "implicit trapezoid (Crank-Nicolson)";
     static constexpr bool a_stable = true;   ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
     static constexpr bool l_stable = false;  ///< |R(infinity)| = 1: stiff modes are not damped
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 2> table{
         {{{T(0), T(0)}, {T(1) / T(2), T(1) / T(2)}}}, {T(1) / T(2), T(1) / T(2)}, {T(0), T(1)}, {}, 2, {}};
@@ -52,9 +56,11 @@ struct trapezoid {
 /// |R(infinity)| = 1, symmetric and symplectic (the Gauss method with s = 1; HW II Sec. IV.5; Hairer,
 /// Lubich & Wanner, Geometric Numerical Integration, Sec. VI.3).
 struct implicit_midpoint {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "implicit midpoint";
     static constexpr bool a_stable = true;   ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
     static constexpr bool l_stable = false;  ///< |R(infinity)| = 1: stiff modes are not damped
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 1> table{{{{T(1) / T(2)}}}, {T(1)}, {T(1) / T(2)}, {}, 2, {}};
 };
@@ -64,9 +70,11 @@ struct implicit_midpoint {
 /// Butcher 1964, Math. Comp. 18, 50-64; Hairer, Norsett & Wanner, Solving ODE I, Sec. II.7; HW II
 /// Sec. IV.5.)
 struct gauss4 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Gauss-Legendre 4";
     static constexpr bool a_stable = true;   ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
     static constexpr bool l_stable = false;  ///< |R(infinity)| = 1: stiff modes are not damped
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 2> table{
         {{{T(1) / T(4), T(1) / T(4) - detail::sqrt3<T> / T(6)}, {T(1) / T(4) + detail::sqrt3<T> / T(6), T(1) / T(4)}}},
@@ -85,12 +93,14 @@ struct gauss4 {
 /// HW II Sec. IV.6; Kennedy & Carpenter 2016, "Diagonally implicit Runge-Kutta methods for ordinary
 /// differential equations. A review", NASA/TM-2016-219173, which lists the same coefficients.)
 struct sdirk3 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "SDIRK 3 (Alexander, L-stable)";
     static constexpr bool a_stable = true;  ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
     static constexpr bool l_stable = true;  ///< A-stable and R(infinity) = 0 (tested from the table)
     /// gamma, the diagonal entry of every stage, in T.
     template <class T>
     static constexpr T g = detail::alexander_gamma<T>;
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 3> table{
         {{{g<T>, T(0), T(0)},
@@ -108,9 +118,11 @@ struct sdirk3 {
 /// Hairer & Wanner's RADAU5. (Ehle 1969, Research Report CSRR 2010, Univ. Waterloo; Butcher 1964; HW II
 /// Sec. IV.5, Table 5.6, p. 74 of the 2nd edition.)
 struct radau_iia5 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Radau IIA 5";
     static constexpr bool a_stable = true;  ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
     static constexpr bool l_stable = true;  ///< A-stable and R(infinity) = 0 (tested from the table)
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 3> table{
         {{{(T(88) - T(7) * detail::sqrt6<T>) / T(360), (T(296) - T(169) * detail::sqrt6<T>) / T(1800),

@@ -59,9 +59,11 @@ namespace tables {
 /// ringing at the step sizes Robertson and Van der Pol are run at. RODAS3 costs one stage more (three
 /// evaluations of f, because stages 1 and 2 share theirs) and is exact in float.
 struct rodas3 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "RODAS3";
     static constexpr bool a_stable = true;  ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
     static constexpr bool l_stable = true;  ///< A-stable and R(infinity) = 0 (tested from the table)
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr rosenbrock_tableau<T, 4> table{{{{T(0), T(0), T(0), T(0)},
                                                       {T(0), T(0), T(0), T(0)},

@@ -13,7 +13,9 @@ namespace odestep::tables {
 
 /// Classic fourth-order Runge-Kutta (Kutta 1901; Hairer, Norsett & Wanner, Solving ODE I, Table II.1.2).
 struct rk4 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "classic RK4";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 4> table{{{{}, {T(1) / T(2)}, {T(0), T(1) / T(2)}, {T(0), T(0), T(1)}}},
                                                  {T(1) / T(6), T(1) / T(3), T(1) / T(3), T(1) / T(6)},
@@ -26,7 +28,9 @@ struct rk4 {
 /// Forward Euler (Euler 1768, Institutiones Calculi Integralis; Hairer, Norsett & Wanner, Solving ODE I,
 /// Sec. II.1). Order 1.
 struct euler {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "forward Euler";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 1> table{{{{}}}, {T(1)}, {T(0)}, {}, 1, {}};
 };
@@ -35,7 +39,9 @@ struct euler {
 /// Solving ODE I, Sec. II.1). Order 2. The embedded vector is forward Euler (order 1), so the error
 /// estimate is h (k2 - k1).
 struct midpoint {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "explicit midpoint (Euler-Richardson) with Euler estimate";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 2, 1> table{
         {{{}, {T(1) / T(2)}}}, {T(0), T(1)}, {T(0), T(1) / T(2)}, {{{T(1), T(0)}}}, 2, {1}};
@@ -44,7 +50,9 @@ struct midpoint {
 /// Heun's method = modified Euler / explicit trapezoidal rule (Heun 1900, Z. Math. Phys. 45, 23-38;
 /// Hairer, Norsett & Wanner, Solving ODE I, Sec. II.1). Order 2.
 struct heun {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Heun (explicit trapezoidal)";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 2> table{{{{}, {T(1)}}}, {T(1) / T(2), T(1) / T(2)}, {T(0), T(1)}, {}, 2, {}};
 };
@@ -52,7 +60,9 @@ struct heun {
 /// Ralston's second-order method, the minimum error bound member of the two-stage family (Ralston 1962,
 /// "Runge-Kutta methods with minimum error bounds", Math. Comp. 16, 431-437). Order 2.
 struct ralston2 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Ralston 2";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 2> table{
         {{{}, {T(2) / T(3)}}}, {T(1) / T(4), T(3) / T(4)}, {T(0), T(2) / T(3)}, {}, 2, {}};
@@ -61,7 +71,9 @@ struct ralston2 {
 /// Kutta's third-order method (Kutta 1901, Z. Math. Phys. 46, 435-453; Hairer, Norsett & Wanner,
 /// Solving ODE I, Sec. II.1). Order 3.
 struct kutta3 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Kutta 3";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 3> table{{{{}, {T(1) / T(2)}, {T(-1), T(2)}}},
                                                  {T(1) / T(6), T(2) / T(3), T(1) / T(6)},
@@ -75,7 +87,9 @@ struct kutta3 {
 /// non-oscillatory shock-capturing schemes", J. Comput. Phys. 77, 439-471; Butcher form in
 /// Gottlieb & Shu 1998, Math. Comp. 67, 73-85). Order 3.
 struct ssprk3 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "SSP RK3 (Shu-Osher)";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 3> table{{{{}, {T(1)}, {T(1) / T(4), T(1) / T(4)}}},
                                                  {T(1) / T(6), T(1) / T(6), T(2) / T(3)},
@@ -88,7 +102,9 @@ struct ssprk3 {
 /// Kutta's 3/8 rule (Kutta 1901, Z. Math. Phys. 46, 435-453; Hairer, Norsett & Wanner, Solving ODE I,
 /// Table II.1.2). Order 4.
 struct rk38 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Kutta 3/8 rule";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 4> table{{{{}, {T(1) / T(3)}, {T(-1) / T(3), T(1)}, {T(1), T(-1), T(1)}}},
                                                  {T(1) / T(8), T(3) / T(8), T(3) / T(8), T(1) / T(8)},
@@ -101,7 +117,9 @@ struct rk38 {
 /// Bogacki-Shampine 3(2) pair, FSAL (Bogacki & Shampine 1989, "A 3(2) pair of Runge-Kutta formulas",
 /// Appl. Math. Lett. 2(4), 321-325). b: order 3 (b4 = 0, the last row of a); bhat: order 2.
 struct bogacki_shampine32 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Bogacki-Shampine 3(2)";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 4, 1> table{
         {{{}, {T(1) / T(2)}, {T(0), T(3) / T(4)}, {T(2) / T(9), T(1) / T(3), T(4) / T(9)}}},
@@ -117,7 +135,9 @@ struct bogacki_shampine32 {
 /// Norsett & Wanner, Solving ODE I, Sec. II.5). Stepped with the fifth-order weights (local extrapolation):
 /// b: order 5; bhat: Fehlberg's fourth-order weights.
 struct fehlberg45 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Runge-Kutta-Fehlberg 4(5)";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 6, 1> table{
         {{{},
@@ -137,7 +157,9 @@ struct fehlberg45 {
 /// rapidly varying right-hand sides", ACM Trans. Math. Softw. 16(3), 201-222; also Press et al., Numerical
 /// Recipes, 2nd ed., Sec. 16.2). b: fifth-order weights; bhat: fourth-order weights.
 struct cash_karp54 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Cash-Karp 5(4)";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 6, 1> table{
         {{{},
@@ -157,7 +179,9 @@ struct cash_karp54 {
 /// J. Comput. Appl. Math. 6(1), 19-26; Hairer, Norsett & Wanner, Solving ODE I, Sec. II.5). b: fifth-order
 /// weights (b7 = 0; row 7 of a equals b); bhat: fourth-order weights.
 struct dormand_prince54 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Dormand-Prince 5(4)";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 7, 1> table{
         {{{},
@@ -181,7 +205,9 @@ struct dormand_prince54 {
 /// seventh-order weights (Fehlberg's c row, stages 1..11). Note b - bhat = 41/840 (-1, 0,...,0, -1, 1, 1)
 /// vanishes on quadrature problems y' = f(t), a known weakness of this error estimate.
 struct fehlberg78 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Runge-Kutta-Fehlberg 7(8)";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 13, 1> table{
         {{{},
@@ -221,7 +247,9 @@ struct fehlberg78 {
 ///             K4 - BHH1*K1 - BHH2*K9 - BHH3*K3, where K4 holds the b-combination and the reused array K3
 ///             holds stage 12 (K2 holds stage 11). (bhh1 = 31/127, bhh3 = 3/136 to the digits given.)
 struct dop853 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Dormand-Prince 8(5,3) (DOP853)";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr butcher_tableau<T, 12, 2> table{
         {{{},

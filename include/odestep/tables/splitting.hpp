@@ -22,14 +22,16 @@ namespace odestep {
 /// symmetric (time-reversible) when the sequence of updates reads the same backwards.
 template <class T, std::size_t M>
 struct splitting_table {
+    /// The scalar type T.
     using value_type = T;
+    /// The number of coefficients of each kind.
     static constexpr std::size_t size = M;
 
-    bool kick_first = true;
-    std::array<T, M> drift{};  // a_i
-    std::array<T, M> kick{};   // b_i
-    int order = 0;
-    bool time_reversible = false;  // claimed; is_consistent checks it against the sequence
+    bool kick_first = true;        ///< the sequence starts with a kick (else with a drift)
+    std::array<T, M> drift{};      ///< the drift coefficients a_i
+    std::array<T, M> kick{};       ///< the kick coefficients b_i
+    int order = 0;                 ///< the order of the composition
+    bool time_reversible = false;  ///< claimed symmetric; is_consistent checks it against the sequence
 };
 
 namespace detail {
@@ -124,7 +126,9 @@ namespace tables {
 /// (HLW), Sect. VI.3):  v_{n+1} = v_n + dt a(t_n, x_n),  x_{n+1} = x_n + dt v_{n+1}.  Order 1; not
 /// symmetric (its adjoint is the drift-first form below).
 struct euler_cromer {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Euler-Cromer (symplectic Euler, kick then drift)";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr splitting_table<T, 1> table{true, {T(1)}, {T(1)}, 1, false};
 };
@@ -132,7 +136,9 @@ struct euler_cromer {
 /// Symplectic Euler with the drift first, the adjoint of Euler-Cromer (HLW, Sect. VI.3, the other
 /// variant):  x_{n+1} = x_n + dt v_n,  v_{n+1} = v_n + dt a(t_n + dt, x_{n+1}).  Order 1; not symmetric.
 struct euler_cromer_drift_first {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "symplectic Euler, drift then kick (adjoint Euler-Cromer)";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr splitting_table<T, 1> table{false, {T(1)}, {T(1)}, 1, false};
 };
@@ -143,7 +149,9 @@ struct euler_cromer_drift_first {
 /// that is x_{n+1} = x_n + dt v_n + dt^2/2 a_n and v_{n+1} = v_n + dt/2 (a_n + a_{n+1}). Order 2, symmetric;
 /// first same as last: one evaluation of a per step.
 struct velocity_verlet {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "velocity Verlet (leapfrog, kick-drift-kick)";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr splitting_table<T, 2> table{true, {T(1), T(0)}, {T(1) / T(2), T(1) / T(2)}, 2, true};
 };
@@ -152,7 +160,9 @@ struct velocity_verlet {
 ///     x_{n+1/2} = x_n + dt/2 v_n,  v_{n+1} = v_n + dt a(t_n + dt/2, x_{n+1/2}),  x_{n+1} = x_{n+1/2} + dt/2 v_{n+1}.
 /// Order 2, symmetric; one evaluation of a per step, no state.
 struct position_verlet {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "position Verlet (leapfrog, drift-kick-drift)";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr splitting_table<T, 2> table{false, {T(1) / T(2), T(1) / T(2)}, {T(1), T(0)}, 2, true};
 };
@@ -164,7 +174,9 @@ struct position_verlet {
 ///     drift gamma/2, kick gamma, drift (1-gamma)/2, kick 1-2gamma, drift (1-gamma)/2, kick gamma, drift gamma/2.
 /// Order 4, symmetric; three evaluations of a per step, no state.
 struct forest_ruth {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Forest-Ruth 4th order";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr splitting_table<T, 4> table{
         false,
@@ -189,7 +201,9 @@ struct forest_ruth {
 /// to 1.6e-22; with the printed ones it leaves h^6 below 1e-18 (invisible in double and x87 long double).
 /// Order 6, symmetric; seven evaluations of a per step, no state.
 struct yoshida6 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Yoshida 6th order (solution A)";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr splitting_table<T, 8> table{
         false,
@@ -215,7 +229,9 @@ struct yoshida6 {
 /// Checked in __float128 on the Kepler orbit: slope 4.00 down to an error of 1.3e-16. Order 4, symmetric,
 /// with an error constant far below Forest-Ruth's; first same as last: six evaluations of a per step.
 struct blanes_moan4 {
+    /// The method's name, for logs and tables.
     static constexpr const char* name = "Blanes-Moan SRKN6b 4th order";
+    /// The table with its coefficients in T.
     template <class T>
     static constexpr splitting_table<T, 7> table{
         true,
