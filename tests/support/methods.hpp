@@ -5,8 +5,11 @@
 #include <odestep/tableaux.hpp>
 #include <tuple>
 
+#include "type_list.hpp"
+
 namespace odestep_test {
 
+/// Every explicit Runge-Kutta table of the library, in the order of tableaux.hpp.
 using all_methods =
     std::tuple<odestep::tableaux::euler, odestep::tableaux::midpoint, odestep::tableaux::heun,
                odestep::tableaux::ralston2, odestep::tableaux::kutta3, odestep::tableaux::ssprk3,
@@ -14,14 +17,10 @@ using all_methods =
                odestep::tableaux::fehlberg45, odestep::tableaux::cash_karp54, odestep::tableaux::dormand_prince54,
                odestep::tableaux::fehlberg78, odestep::tableaux::dop853>;
 
-// Calls f(Method{}) for every method, in the order above.
-template <class F, class... M>
-void for_each_method_in(F&& f, std::tuple<M...>*) {
-    (f(M{}), ...);
-}
+/// Calls f(Method{}) for every method of all_methods, in the order above.
 template <class F>
 void for_each_method(F&& f) {
-    for_each_method_in(f, static_cast<all_methods*>(nullptr));
+    for_each_type<all_methods>(f);
 }
 
 }  // namespace odestep_test
