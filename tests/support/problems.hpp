@@ -70,12 +70,15 @@ struct spring {
 
 /// Kepler's problem in the plane with GM = 1: a = -x / |x|^3.
 struct kepler {
-    /// a(t, x) = -x / r^3.
+    /// a(t, x) = -k x with k = 1 / r^3: both components scaled by one rounded k, so a stays parallel to x
+    /// to one rounding per component. (The figures measured in splitting_test.cpp, energy and |L - L0| over
+    /// 10^6 steps, were taken with this rounding.)
     template <class T>
     vec2<T> operator()(T, const vec2<T>& x) const noexcept {
         const T r2 = x[0] * x[0] + x[1] * x[1];
-        const T r3 = r2 * std::sqrt(r2);
-        return {-x[0] / r3, -x[1] / r3};
+        const T r = std::sqrt(r2);
+        const T k = T(1) / (r2 * r);
+        return {-k * x[0], -k * x[1]};
     }
 };
 
