@@ -11,6 +11,7 @@
 
 #include "support/compare.hpp"
 #include "support/counting.hpp"
+#include "support/methods.hpp"
 #include "support/order_fit.hpp"
 #include "support/problems.hpp"
 #include "support/type_list.hpp"
@@ -37,10 +38,7 @@ T circular_orbit_error(T t_end, std::size_t steps) {
     return odestep_test::max_abs_difference(x, orbit::x_at(t_end), v, orbit::v_at(t_end));
 }
 
-using newtonian_methods = std::tuple<odestep::newtonian_euler<vec2<double>>, odestep::newtonian_midpoint<vec2<double>>,
-                                     odestep::newtonian_euler_richardson<vec2<double>>,
-                                     odestep::half_step<vec2<double>>, odestep::leapfrog_position_form<vec2<double>>,
-                                     odestep::beeman<vec2<double>>, odestep::predictor_corrector<vec2<double>>>;
+using newtonian_methods = odestep_test::classic_newtonian_steppers<vec2<double>>;
 
 template <class Stepper>
 const char* name_of() {
@@ -320,10 +318,7 @@ TEST_CASE("beeman, caller's history: exact under a constant force, and the histo
     using S = std::array<double, 1>;
     const double g = 9.75;  // 39/4
     std::size_t calls = 0;
-    auto gravity = [&calls, g](double, const S&) {
-        ++calls;
-        return S{-g};
-    };
+    const odestep_test::counting<odestep_test::uniform_gravity<double>> gravity{{g}, &calls};
     const odestep::beeman<S> stepper;  // const: the caller keeps everything
     odestep::beeman<S>::history hist{};
     CHECK_FALSE(hist.started);

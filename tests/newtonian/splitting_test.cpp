@@ -15,6 +15,7 @@
 
 #include "support/compare.hpp"
 #include "support/counting.hpp"
+#include "support/methods.hpp"
 #include "support/order_fit.hpp"
 #include "support/problems.hpp"
 #include "support/type_list.hpp"
@@ -27,6 +28,7 @@ using odestep_test::kepler_angular_momentum;
 using odestep_test::kepler_energy;
 using odestep_test::max_abs_difference;
 using odestep_test::same_bits;
+using odestep_test::splitting_methods;
 using odestep_test::vec2;
 using state = vec2<double>;
 using state1 = std::array<double, 1>;
@@ -43,11 +45,6 @@ const double orbit_momentum = orbit::angular_momentum<double>();
 constexpr double eps = std::numeric_limits<double>::epsilon();
 constexpr double qnan = std::numeric_limits<double>::quiet_NaN();
 constexpr double pi = 3.141592653589793238462643383279502884;
-
-using all_splittings =
-    std::tuple<odestep::splittings::euler_cromer, odestep::splittings::euler_cromer_drift_first,
-               odestep::splittings::velocity_verlet, odestep::splittings::position_verlet,
-               odestep::splittings::forest_ruth, odestep::splittings::yoshida6, odestep::splittings::blanes_moan4>;
 
 template <class M, class State = state>
 using stepper_of = odestep::splitting<M, State>;
@@ -146,7 +143,7 @@ state round_trip_error(std::size_t steps, double dt, double& v_error) {
 // Traits and the schemes themselves
 
 TEST_CASE("splitting: traits match the published schemes, and a step makes exactly the evaluations it says") {
-    for_each_type<all_splittings>([](auto method) {
+    for_each_type<splitting_methods>([](auto method) {
         using M = decltype(method);
         using stepper = stepper_of<M>;
         constexpr expected_traits e = published<M>();
@@ -284,7 +281,7 @@ TEST_CASE(
     // (eccentric_orbit in support/problems.hpp). Not a whole orbit: there the first-order methods' O(h) error cancels (the O(h)
     // term of their modified Hamiltonian, +-v.grad(V)/2 = +-(dV/dt)/2, averages to zero over an orbit) and
     // they show slope 2.00.
-    for_each_type<all_splittings>([](auto method) {
+    for_each_type<splitting_methods>([](auto method) {
         using M = decltype(method);
         constexpr int order = stepper_of<M>::order;
         constexpr std::size_t points = kepler_points<M>();
@@ -311,7 +308,7 @@ TEST_CASE(
     const double t_end = 3.0;
     const double x_exact = 4.0 / 3.0 * std::cos(t_end) - std::cos(2 * t_end) / 3.0;
     const double v_exact = -4.0 / 3.0 * std::sin(t_end) + 2.0 / 3.0 * std::sin(2 * t_end);
-    for_each_type<all_splittings>([&](auto method) {
+    for_each_type<splitting_methods>([&](auto method) {
         using M = decltype(method);
         using stepper = stepper_of<M, state1>;
         constexpr int order = stepper::order;
@@ -363,7 +360,7 @@ TEST_CASE("10^6 steps of the Kepler orbit: the energy error stays bounded, with 
     // 1.2 L on this orbit) and independent from update to update: a random walk, bounded here by
     // 2 sqrt(updates) ULPs of L, updates = steps times the updates per step.
     constexpr std::size_t steps = 1000000;
-    for_each_type<all_splittings>([](auto method) {
+    for_each_type<splitting_methods>([](auto method) {
         using M = decltype(method);
         using stepper = stepper_of<M>;
         const double dt = stepper::order <= 2 ? 2 * pi / 1000 : 2 * pi / 200;
@@ -447,7 +444,7 @@ TEST_CASE(
     // the test can fail.
     const double dt = 2 * pi / 1000;
     const double scale = std::sqrt(3.0);  // the largest component of the state
-    for_each_type<all_splittings>([&](auto method) {
+    for_each_type<splitting_methods>([&](auto method) {
         using M = decltype(method);
         double v_error = 0;
         const state x_error = round_trip_error<M>(100, dt, v_error);
@@ -605,7 +602,7 @@ TEST_CASE("every splitting works in float: its error is its double error to with
     // Kepler half orbit at each method's coarsest step count of the order test. Round-off in float: a few
     // ULPs of the state (|x|, |v| <= 2) per step, growing at most like the step count: 4 N eps_float
     // (measured: at most 0.4 N eps_float).
-    for_each_type<all_splittings>([](auto method) {
+    for_each_type<splitting_methods>([](auto method) {
         using M = decltype(method);
         const std::size_t n = kepler_coarsest_steps<M>();
         const double err_double = kepler_half_orbit_error<M, double>(n);
@@ -641,7 +638,7 @@ TEST_CASE("float, double and long double steppers come from the same template an
 // Rollback and bad input
 
 TEST_CASE("a NaN from any evaluation of any splitting leaves x and v exactly as they were") {
-    for_each_type<all_splittings>([](auto method) {
+    for_each_type<splitting_methods>([](auto method) {
         using M = decltype(method);
         using stepper = stepper_of<M>;
         for (std::size_t poisoned = 1; poisoned <= stepper::rhs_evals_per_step; ++poisoned) {
@@ -665,7 +662,7 @@ TEST_CASE("a NaN from any evaluation of any splitting leaves x and v exactly as 
 TEST_CASE("a step that overflows is rolled back, for every splitting") {
     // No force; the drift x + dt v overflows to Inf.
     auto none = [](double, const state&) { return state{0.0, 0.0}; };
-    for_each_type<all_splittings>([&](auto method) {
+    for_each_type<splitting_methods>([&](auto method) {
         using M = decltype(method);
         stepper_of<M> s;
         state x{1e308, 0.0};
@@ -723,7 +720,7 @@ TEST_CASE("bad input through integrate leaves x and v untouched and observes not
         {1.0, 0.0, 0.1, odestep::status::wrong_direction},
         {qnan, 1.0, 0.1, odestep::status::invalid_time},
     };
-    for_each_type<all_splittings>([&](auto method) {
+    for_each_type<splitting_methods>([&](auto method) {
         using M = decltype(method);
         for (const case_t& c : cases) {
             std::size_t calls = 0;
@@ -821,7 +818,7 @@ struct has_caller_acceleration_step<
 }  // namespace
 
 TEST_CASE("the caller-kept acceleration form exists exactly for the first-same-as-last tables, and is const") {
-    for_each_type<all_splittings>([](auto method) {
+    for_each_type<splitting_methods>([](auto method) {
         using M = decltype(method);
         INFO(doctest::String(M::name));
         CHECK(has_caller_acceleration_step<stepper_of<M>>::value == published<M>().fsal);
@@ -836,10 +833,7 @@ TEST_CASE(
     using S = std::array<double, 1>;
     const double g = 9.75;  // 39/4
     std::size_t calls = 0;
-    auto gravity = [&calls, g](double, const S&) {
-        ++calls;
-        return S{-g};
-    };
+    const odestep_test::counting<odestep_test::uniform_gravity<double>> gravity{{g}, &calls};
     const odestep::velocity_verlet<S> stepper;  // const: the caller keeps everything
     S x{100.0};
     S v{12.5};

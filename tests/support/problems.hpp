@@ -68,6 +68,22 @@ struct spring {
     }
 };
 
+/// Uniform gravity x'' = -g in every component: x = x0 + v0 t - g t^2 / 2, v = v0 - g t. Every method of
+/// order 2 or more that is exact for a constant force reproduces it, to rounding; with g, x0, v0 and the step
+/// dyadic rationals of few bits, to the last bit.
+template <class T>
+struct uniform_gravity {
+    T g;  ///< the acceleration is -g
+
+    /// a(t, x) = -g.
+    template <std::size_t N>
+    std::array<T, N> operator()(T, const std::array<T, N>&) const noexcept {
+        std::array<T, N> a{};
+        for (std::size_t i = 0; i < N; ++i) a[i] = -g;
+        return a;
+    }
+};
+
 /// Kepler's problem in the plane with GM = 1: a = -x / |x|^3.
 struct kepler {
     /// a(t, x) = -k x with k = 1 / r^3: both components scaled by one rounded k, so a stays parallel to x
