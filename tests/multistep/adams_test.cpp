@@ -13,6 +13,7 @@
 
 #include "support/compare.hpp"
 #include "support/counting.hpp"
+#include "support/methods.hpp"
 #include "support/order_fit.hpp"
 #include "support/problems.hpp"
 #include "support/type_list.hpp"
@@ -21,9 +22,7 @@ namespace {
 
 namespace tables = odestep::adams_tables;
 
-using all_adams = std::tuple<tables::bashforth2, tables::bashforth3, tables::bashforth4, tables::bashforth5,
-                             tables::bashforth_moulton4>;
-
+using odestep_test::adams_methods;
 using odestep_test::exp_sin;
 using odestep_test::for_each_type;
 using odestep_test::same_bits;
@@ -152,7 +151,7 @@ TEST_CASE(
         int order;
         std::size_t steps, evals_started;
     };
-    for_each_type<all_adams>([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         using stepper = odestep::adams<M, state>;
         // From the formulas in multistep.hpp: AB-k has order k and reads k derivatives, one new per step;
@@ -175,7 +174,7 @@ TEST_CASE(
 }
 
 TEST_CASE("adams: each table satisfies its order conditions to long double round-off and fails the next one") {
-    for_each_type<all_adams>([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         constexpr auto tab = M::template table<long double>;
         constexpr std::size_t K = decltype(tab)::steps;
@@ -218,7 +217,7 @@ TEST_CASE("adams: y' = t^(k-1) is integrated exactly, with a starter exact for i
 }
 
 TEST_CASE("adams: every method reaches its nominal order on y0' = y0 y1, y1' = -y2, y2' = y1 (slope within 0.2)") {
-    for_each_type<all_adams>([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         constexpr int order = odestep::adams<M, state>::order;
         const std::size_t n0 = coarsest_steps<M>();
@@ -236,7 +235,7 @@ TEST_CASE("adams: every method reaches its nominal order on y0' = y0 y1, y1' = -
 }
 
 TEST_CASE("adams: every method works in float and long double: the error is the double error to within round-off") {
-    for_each_type<all_adams>([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         const std::size_t n = coarsest_steps<M>();
         const double err_double = error_after<M, double>(20.0, n);
@@ -256,7 +255,7 @@ TEST_CASE("adams: every method works in float and long double: the error is the 
 TEST_CASE(
     "adams: with the history empty, the first k-1 steps are bit-identical to the starter's, then the formula takes "
     "over") {
-    for_each_type<all_adams>([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         auto compare = [](auto multistep, auto starter) {
             using stepper = decltype(multistep);
@@ -287,7 +286,7 @@ TEST_CASE(
 }
 
 TEST_CASE("adams: a step makes exactly one evaluation (AB) or two (PECE) once started, and the starter's before") {
-    for_each_type<all_adams>([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         using stepper_t = odestep::adams<M, state>;
         stepper_t stepper;
@@ -306,7 +305,7 @@ TEST_CASE("adams: a step makes exactly one evaluation (AB) or two (PECE) once st
 
 TEST_CASE("adams: both right-hand-side signatures give bit-identical runs") {
     auto returning = [](double, const state& y) { return state{y[0] * y[1], -y[2], y[1]}; };
-    for_each_type<all_adams>([&](auto method) {
+    for_each_type<adams_methods>([&](auto method) {
         using M = decltype(method);
         odestep::adams<M, state> a;
         odestep::adams<M, state> b;
@@ -320,7 +319,7 @@ TEST_CASE("adams: both right-hand-side signatures give bit-identical runs") {
 }
 
 TEST_CASE("adams: a different dt or a wrong t returns step_mismatch, evaluates nothing, and changes nothing") {
-    for_each_type<all_adams>([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         using stepper_t = odestep::adams<M, state>;
         constexpr std::size_t steps = 12;
@@ -361,7 +360,7 @@ TEST_CASE("adams: after a step whose end time overflows to Inf, no time continue
     // around an infinite expected time must not admit everything). y' = 0, so that y stays finite whatever dt.
     const double big = std::numeric_limits<double>::max();
     auto still = [](double, const state&, state& dydt) { dydt = state{}; };
-    for_each_type<all_adams>([big, still](auto method) {
+    for_each_type<adams_methods>([big, still](auto method) {
         using stepper_t = odestep::adams<decltype(method), state>;
         stepper_t stepper;
         state y = y_start;
@@ -376,7 +375,7 @@ TEST_CASE("adams: after a step whose end time overflows to Inf, no time continue
 
 TEST_CASE("adams: t within a few ULPs of the expected time is accepted, as the times of a step counter are") {
     // The check allows 8 ULPs of |t| + |dt| + |t_first|; t0 + i dt and t_prev + dt differ by a few.
-    for_each_type<all_adams>([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         using stepper_t = odestep::adams<M, state>;
         constexpr std::size_t steps = 10;
@@ -420,7 +419,7 @@ TEST_CASE("adams: counter times t0 + i dt are accepted across zero and over 10^6
 
 TEST_CASE(
     "adams: the first step after construction or reset accepts any t and dt, and reset restarts with the starter") {
-    for_each_type<all_adams>([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         using stepper_t = odestep::adams<M, state>;
         stepper_t stepper;
@@ -455,7 +454,7 @@ TEST_CASE(
 TEST_CASE(
     "adams: a NaN or Inf from any evaluation rolls the step back, y and history, and a retry continues "
     "bit-identically") {
-    for_each_type<all_adams>([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         using stepper_t = odestep::adams<M, state>;
         const double inf = std::numeric_limits<double>::infinity();
@@ -512,7 +511,7 @@ TEST_CASE("adams: a new state that overflows to Inf, from finite derivatives, is
 TEST_CASE(
     "adams: integrate over a whole number of steps works and equals integrate_n_steps; a run that needs a shortened "
     "last step is refused with step_mismatch before anything is touched") {
-    for_each_type<all_adams>([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         using stepper_t = odestep::adams<M, state>;
         INFO(doctest::String(M::name));

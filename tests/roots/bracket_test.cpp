@@ -11,12 +11,12 @@
 #include <limits>
 #include <tuple>
 
+#include "support/methods.hpp"
 #include "support/type_list.hpp"
 
 namespace {
 
-using all_finders =
-    std::tuple<odestep::bisection, odestep::illinois, odestep::anderson_bjorck, odestep::brent, odestep::itp>;
+using all_finders = odestep_test::root_finders;
 using secant_family = std::tuple<odestep::illinois, odestep::anderson_bjorck, odestep::brent>;
 
 using odestep_test::for_each_type;

@@ -1,7 +1,13 @@
-// The table library as one type list, for tests that run over every method.
+// The library's method families as type lists, for tests that run over every method of a family (with
+// for_each_type, type_list.hpp): a method added to the library is added here once, and every test that
+// iterates the family covers it.
 #ifndef ODESTEP_TESTS_METHODS_HPP
 #define ODESTEP_TESTS_METHODS_HPP
 
+#include <odestep/bracket.hpp>
+#include <odestep/multistep.hpp>
+#include <odestep/newtonian.hpp>
+#include <odestep/symplectic.hpp>
 #include <odestep/tableaux.hpp>
 #include <tuple>
 
@@ -22,6 +28,28 @@ template <class F>
 void for_each_method(F&& f) {
     for_each_type<all_methods>(f);
 }
+
+/// Every Adams table (odestep::adams<Table, State>).
+using adams_methods =
+    std::tuple<odestep::adams_tables::bashforth2, odestep::adams_tables::bashforth3, odestep::adams_tables::bashforth4,
+               odestep::adams_tables::bashforth5, odestep::adams_tables::bashforth_moulton4>;
+
+/// Every splitting table (odestep::splitting<Table, State>).
+using splitting_methods =
+    std::tuple<odestep::splittings::euler_cromer, odestep::splittings::euler_cromer_drift_first,
+               odestep::splittings::velocity_verlet, odestep::splittings::position_verlet,
+               odestep::splittings::forest_ruth, odestep::splittings::yoshida6, odestep::splittings::blanes_moan4>;
+
+/// Every textbook Newtonian stepper that is not a splitting (newtonian/classic.hpp), on State.
+template <class State>
+using classic_newtonian_steppers =
+    std::tuple<odestep::newtonian_euler<State>, odestep::newtonian_midpoint<State>,
+               odestep::newtonian_euler_richardson<State>, odestep::half_step<State>,
+               odestep::leapfrog_position_form<State>, odestep::beeman<State>, odestep::predictor_corrector<State>>;
+
+/// Every bracketing root finder (roots/bracket.hpp).
+using root_finders =
+    std::tuple<odestep::bisection, odestep::illinois, odestep::anderson_bjorck, odestep::brent, odestep::itp>;
 
 }  // namespace odestep_test
 
