@@ -61,9 +61,7 @@ std::size_t allocations_of_newtonian_calls() {
         (void)odestep::integrate_n_steps(stepper, spring, x, v, T(0), T(0.01), 10);
         (void)odestep::integrate(stepper, spring, x, v, T(0), T(1), T(-0.1));  // wrong_direction
     };
-    odestep_test::for_each_type<odestep_test::classic_newtonian_steppers<vec>>(run);
-    odestep_test::for_each_type<odestep_test::splitting_methods>(
-        [&](auto method) { run(odestep::splitting<decltype(method), vec>{}); });
+    odestep_test::for_each_type<odestep_test::newtonian_steppers<vec>>(run);
     // the first-same-as-last steppers' form with the acceleration kept by the caller, a good step and a
     // failing one (NaN from the force)
     auto run_caller_kept = [&](const auto& stepper) {
@@ -127,8 +125,7 @@ std::size_t allocations_of_multistep_calls() {
         auto poison = [](T, const state3<T>&) { return state3<T>{std::numeric_limits<T>::quiet_NaN(), T(0), T(0)}; };
         (void)stepper.step(poison, y, T(0.1), T(0.01));  // non_finite
     };
-    odestep_test::for_each_type<odestep_test::adams_methods>(
-        [&](auto method) { run(odestep::adams<decltype(method), state3<T>>{}); });
+    odestep_test::for_each_type<odestep_test::adams_steppers<state3<T>>>(run);
     return odestep_test::allocations() - before;
 }
 

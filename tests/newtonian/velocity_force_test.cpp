@@ -11,6 +11,7 @@
 
 #include "support/compare.hpp"
 #include "support/counting.hpp"
+#include "support/methods.hpp"
 #include "support/problems.hpp"
 #include "support/type_list.hpp"
 
@@ -39,10 +40,8 @@ double damped_error(std::uint64_t n) {
     return std::fabs(x[0] - damped_exact(2.0));
 }
 
-using velocity_steppers =
-    std::tuple<odestep::euler_cromer<s1>, odestep::euler_cromer_drift_first<s1>, odestep::velocity_verlet<s1>,
-               odestep::position_verlet<s1>, odestep::forest_ruth<s1>, odestep::yoshida6<s1>, odestep::blanes_moan4<s1>,
-               odestep::beeman<s1>>;
+// Every splitting, and Beeman.
+using velocity_steppers = odestep_test::concat<odestep_test::splitting_steppers<s1>, std::tuple<odestep::beeman<s1>>>;
 
 }  // namespace
 

@@ -47,6 +47,19 @@ using classic_newtonian_steppers =
                odestep::newtonian_euler_richardson<State>, odestep::half_step<State>,
                odestep::leapfrog_position_form<State>, odestep::beeman<State>, odestep::predictor_corrector<State>>;
 
+/// The Adams steppers on State (default starter).
+template <class State>
+using adams_steppers = steppers_of<odestep::adams, adams_methods, State>;
+
+/// The splitting steppers on State.
+template <class State>
+using splitting_steppers = steppers_of<odestep::splitting, splitting_methods, State>;
+
+/// Every Newtonian stepper on State whose force is a(t, x): the classic ones, then the splittings (the Boris
+/// pushers, which take fields, are not among them).
+template <class State>
+using newtonian_steppers = concat<classic_newtonian_steppers<State>, splitting_steppers<State>>;
+
 /// Every bracketing root finder (roots/bracket.hpp).
 using root_finders =
     std::tuple<odestep::bisection, odestep::illinois, odestep::anderson_bjorck, odestep::brent, odestep::itp>;
