@@ -100,7 +100,11 @@ T run_everything() {
             loop.tick(oscillators{}, y).status == odestep::status::ok)
             sum += y[0];
     };
-    odestep_test::for_each_type<odestep_test::root_finders>(events_with);
+    events_with(odestep::bisection{});
+    events_with(odestep::illinois{});
+    events_with(odestep::anderson_bjorck{});
+    events_with(odestep::brent{});
+    events_with(odestep::itp{});
     return sum;
 }
 }  // namespace
