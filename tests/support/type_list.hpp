@@ -21,6 +21,7 @@ constexpr void for_each_type(F&& f) {
 }
 
 namespace detail {
+/// The work of odestep_test::steppers_of: unpacks the std::tuple of methods.
 template <template <class...> class Stepper, class Methods, class State>
 struct steppers_of;
 template <template <class...> class Stepper, class... Methods, class State>
