@@ -61,20 +61,7 @@ std::size_t allocations_of_newtonian_calls() {
         (void)odestep::integrate_n_steps(stepper, spring, x, v, T(0), T(0.01), 10);
         (void)odestep::integrate(stepper, spring, x, v, T(0), T(1), T(-0.1));  // wrong_direction
     };
-    run(odestep::newtonian_euler<vec>{});
-    run(odestep::newtonian_midpoint<vec>{});
-    run(odestep::newtonian_euler_richardson<vec>{});
-    run(odestep::half_step<vec>{});
-    run(odestep::leapfrog_position_form<vec>{});
-    run(odestep::beeman<vec>{});
-    run(odestep::predictor_corrector<vec>{});
-    run(odestep::euler_cromer<vec>{});
-    run(odestep::euler_cromer_drift_first<vec>{});
-    run(odestep::velocity_verlet<vec>{});
-    run(odestep::position_verlet<vec>{});
-    run(odestep::forest_ruth<vec>{});
-    run(odestep::yoshida6<vec>{});
-    run(odestep::blanes_moan4<vec>{});
+    odestep_test::for_each_type<odestep_test::newtonian_steppers<vec>>(run);
     // the first-same-as-last steppers' form with the acceleration kept by the caller, a good step and a
     // failing one (NaN from the force)
     auto run_caller_kept = [&](const auto& stepper) {
@@ -138,11 +125,7 @@ std::size_t allocations_of_multistep_calls() {
         auto poison = [](T, const state3<T>&) { return state3<T>{std::numeric_limits<T>::quiet_NaN(), T(0), T(0)}; };
         (void)stepper.step(poison, y, T(0.1), T(0.01));  // non_finite
     };
-    run(odestep::adams_bashforth2<state3<T>>{});
-    run(odestep::adams_bashforth3<state3<T>>{});
-    run(odestep::adams_bashforth4<state3<T>>{});
-    run(odestep::adams_bashforth5<state3<T>>{});
-    run(odestep::adams_bashforth_moulton4<state3<T>>{});
+    odestep_test::for_each_type<odestep_test::adams_steppers<state3<T>>>(run);
     return odestep_test::allocations() - before;
 }
 

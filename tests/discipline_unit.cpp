@@ -38,20 +38,7 @@ T run_everything() {
         vec v{T(0), T(1)};
         if (odestep::integrate(stepper, spring, x, v, T(0), T(1), T(0.125)).status == odestep::status::ok) sum += x[0];
     };
-    add(odestep::newtonian_euler<vec>{});
-    add(odestep::newtonian_midpoint<vec>{});
-    add(odestep::newtonian_euler_richardson<vec>{});
-    add(odestep::half_step<vec>{});
-    add(odestep::leapfrog_position_form<vec>{});
-    add(odestep::beeman<vec>{});
-    add(odestep::predictor_corrector<vec>{});
-    add(odestep::euler_cromer<vec>{});
-    add(odestep::euler_cromer_drift_first<vec>{});
-    add(odestep::velocity_verlet<vec>{});
-    add(odestep::position_verlet<vec>{});
-    add(odestep::forest_ruth<vec>{});
-    add(odestep::yoshida6<vec>{});
-    add(odestep::blanes_moan4<vec>{});
+    odestep_test::for_each_type<odestep_test::newtonian_steppers<vec>>(add);
     // the first-same-as-last steppers' form with the acceleration kept by the caller
     auto add_caller_kept = [&](const auto& stepper) {
         vec x{T(1), T(0)};
@@ -95,11 +82,7 @@ T run_everything() {
         if (odestep::integrate_n_steps(stepper, oscillators{}, y, T(0), T(0.125), 8).status == odestep::status::ok)
             sum += y[0];
     };
-    add_adams(odestep::adams_bashforth2<state4<T>>{});
-    add_adams(odestep::adams_bashforth3<state4<T>>{});
-    add_adams(odestep::adams_bashforth4<state4<T>>{});
-    add_adams(odestep::adams_bashforth5<state4<T>>{});
-    add_adams(odestep::adams_bashforth_moulton4<state4<T>>{});
+    odestep_test::for_each_type<odestep_test::adams_steppers<state4<T>>>(add_adams);
     // and the event loops, with every root finder: their memory lives in the loop objects
     auto events_with = [&](auto finder) {
         using F = decltype(finder);

@@ -5,9 +5,10 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <cstring>
 #include <functional>
 #include <limits>
+
+#include "support/compare.hpp"
 
 namespace {
 
@@ -31,10 +32,7 @@ struct recorder {
     }
 };
 
-template <class State>
-bool same_bits(const State& a, const State& b) {
-    return std::memcmp(a.data(), b.data(), sizeof(a)) == 0;
-}
+using odestep_test::same_bits;
 
 constexpr double qnan = std::numeric_limits<double>::quiet_NaN();
 constexpr double inf = std::numeric_limits<double>::infinity();

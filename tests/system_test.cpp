@@ -3,7 +3,8 @@
 #include <odestep/odestep.hpp>
 
 #include <array>
-#include <cstring>
+
+#include "support/compare.hpp"
 
 namespace {
 
@@ -44,9 +45,9 @@ TEST_CASE("system: the returning and the in-place signature give bit-identical r
     const state2 b = run(&sho_inplace);
     const state2 c = run([](double t, const state2& y) { return sho_returning(t, y); });
     const state2 d = run([](double t, const state2& y, state2& dydt) { sho_inplace(t, y, dydt); });
-    CHECK(std::memcmp(&a, &b, sizeof a) == 0);
-    CHECK(std::memcmp(&a, &c, sizeof a) == 0);
-    CHECK(std::memcmp(&a, &d, sizeof a) == 0);
+    CHECK(odestep_test::same_bits(a, b));
+    CHECK(odestep_test::same_bits(a, c));
+    CHECK(odestep_test::same_bits(a, d));
 }
 
 TEST_CASE("system: a stateful functor is called in place, not copied per stage") {

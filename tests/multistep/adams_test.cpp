@@ -7,46 +7,29 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <cstring>
 #include <limits>
 #include <tuple>
 #include <type_traits>
+
+#include "support/compare.hpp"
+#include "support/counting.hpp"
+#include "support/methods.hpp"
+#include "support/order_fit.hpp"
+#include "support/problems.hpp"
+#include "support/type_list.hpp"
 
 namespace {
 
 namespace tables = odestep::adams_tables;
 
-using all_adams = std::tuple<tables::bashforth2, tables::bashforth3, tables::bashforth4, tables::bashforth5,
-                             tables::bashforth_moulton4>;
+using odestep_test::adams_methods;
+using odestep_test::exp_sin;
+using odestep_test::for_each_type;
+using odestep_test::same_bits;
+using odestep_test::state3;
 
-template <class F, class... M>
-void for_each_in(F&& f, std::tuple<M...>*) {
-    (f(M{}), ...);
-}
-template <class F>
-void for_each_adams(F&& f) {
-    for_each_in(f, static_cast<all_adams*>(nullptr));
-}
-
-template <class State>
-bool same_bits(const State& a, const State& b) {
-    return std::memcmp(a.data(), b.data(), sizeof(a)) == 0;
-}
-
-// The test problem of observed_order_test.cpp, with a closed-form solution:
-//   y0' = y0 y1,  y1' = -y2,  y2' = y1,  y(0) = (1, 1, 0)  =>  y1 = cos t, y2 = sin t, y0 = exp(sin t).
-template <class T>
-using state3 = std::array<T, 3>;
+// The test problem of observed_order_test.cpp (problems.hpp), y0' = y0 y1, y1' = -y2, y2' = y1, in double.
 using state = state3<double>;
-
-struct exp_sin {
-    template <class T>
-    void operator()(T, const state3<T>& y, state3<T>& dydt) const noexcept {
-        dydt[0] = y[0] * y[1];
-        dydt[1] = -y[2];
-        dydt[2] = y[1];
-    }
-};
 
 // exp_sin that counts its calls, and returns `poison` in its first component on call number `poisoned`
 // (counting from 1; 0 never).
@@ -55,8 +38,7 @@ struct counting_exp_sin {
     std::size_t poisoned = 0;
     double poison = std::numeric_limits<double>::quiet_NaN();
     void operator()(double t, const state& y, state& dydt) const noexcept {
-        ++*calls;
-        exp_sin{}(t, y, dydt);
+        odestep_test::counting<exp_sin>{{}, calls}(t, y, dydt);
         if (*calls == poisoned) dydt[0] = poison;
     }
 };
@@ -109,14 +91,7 @@ void order_residuals(const std::array<long double, K>& w, long double first_node
 // Largest component error at t_end after `steps` steps in T.
 template <class M, class T>
 T error_after(T t_end, std::size_t steps) {
-    odestep::adams<M, state3<T>> stepper;
-    state3<T> y{T(1), T(1), T(0)};
-    const auto r = odestep::integrate_n_steps(stepper, exp_sin{}, y, T(0), t_end / static_cast<T>(steps), steps);
-    REQUIRE(r.status == odestep::status::ok);
-    const T e0 = std::fabs(y[0] - std::exp(std::sin(t_end)));
-    const T e1 = std::fabs(y[1] - std::cos(t_end));
-    const T e2 = std::fabs(y[2] - std::sin(t_end));
-    return std::fmax(e0, std::fmax(e1, e2));
+    return odestep_test::error_after<odestep::adams<M, state3<T>>, exp_sin>(t_end, steps);
 }
 
 // The coarsest step count of the fit (then 2x, 4x, 8x), at t_end = 20. Chosen from the local slopes
@@ -140,21 +115,6 @@ constexpr std::size_t coarsest_steps() {
         return 256;
     else
         return 2048;
-}
-
-// Least-squares slope of log(error) against log(h) over h, h/2, h/4, h/8.
-double fitted_order(const std::array<double, 4>& errors) {
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (std::size_t i = 0; i < errors.size(); ++i) {
-        const double x = -std::log(2.0) * static_cast<double>(i);
-        const double yv = std::log(errors[i]);
-        sx += x;
-        sy += yv;
-        sxx += x * x;
-        sxy += x * yv;
-    }
-    const double n = static_cast<double>(errors.size());
-    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -191,7 +151,7 @@ TEST_CASE(
         int order;
         std::size_t steps, evals_started;
     };
-    for_each_adams([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         using stepper = odestep::adams<M, state>;
         // From the formulas in multistep.hpp: AB-k has order k and reads k derivatives, one new per step;
@@ -214,7 +174,7 @@ TEST_CASE(
 }
 
 TEST_CASE("adams: each table satisfies its order conditions to long double round-off and fails the next one") {
-    for_each_adams([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         constexpr auto tab = M::template table<long double>;
         constexpr std::size_t K = decltype(tab)::steps;
@@ -257,14 +217,16 @@ TEST_CASE("adams: y' = t^(k-1) is integrated exactly, with a starter exact for i
 }
 
 TEST_CASE("adams: every method reaches its nominal order on y0' = y0 y1, y1' = -y2, y2' = y1 (slope within 0.2)") {
-    for_each_adams([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         constexpr int order = odestep::adams<M, state>::order;
         const std::size_t n0 = coarsest_steps<M>();
         std::array<double, 4> errors{};
         for (std::size_t i = 0; i < errors.size(); ++i) errors[i] = error_after<M, double>(20.0, n0 << i);
-        const double slope = fitted_order(errors);
-        INFO(doctest::String(M::name), ": errors ", errors[0], " ", errors[1], " ", errors[2], " ", errors[3]);
+        const double slope = odestep_test::fitted_order(errors);
+        const auto local = odestep_test::local_slopes(errors);
+        INFO(doctest::String(M::name), ": errors ", errors[0], " ", errors[1], " ", errors[2], " ", errors[3],
+             "; local slopes ", local[0], " ", local[1], " ", local[2]);
         MESSAGE(doctest::String(M::name), ": order ", order, ", fitted slope ", slope, " (N = ", n0, " to ", n0 << 3,
                 ", error ", errors[0], " to ", errors[3], ")");
         CHECK(std::fabs(slope - order) < 0.2);
@@ -273,7 +235,7 @@ TEST_CASE("adams: every method reaches its nominal order on y0' = y0 y1, y1' = -
 }
 
 TEST_CASE("adams: every method works in float and long double: the error is the double error to within round-off") {
-    for_each_adams([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         const std::size_t n = coarsest_steps<M>();
         const double err_double = error_after<M, double>(20.0, n);
@@ -293,7 +255,7 @@ TEST_CASE("adams: every method works in float and long double: the error is the 
 TEST_CASE(
     "adams: with the history empty, the first k-1 steps are bit-identical to the starter's, then the formula takes "
     "over") {
-    for_each_adams([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         auto compare = [](auto multistep, auto starter) {
             using stepper = decltype(multistep);
@@ -324,7 +286,7 @@ TEST_CASE(
 }
 
 TEST_CASE("adams: a step makes exactly one evaluation (AB) or two (PECE) once started, and the starter's before") {
-    for_each_adams([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         using stepper_t = odestep::adams<M, state>;
         stepper_t stepper;
@@ -343,7 +305,7 @@ TEST_CASE("adams: a step makes exactly one evaluation (AB) or two (PECE) once st
 
 TEST_CASE("adams: both right-hand-side signatures give bit-identical runs") {
     auto returning = [](double, const state& y) { return state{y[0] * y[1], -y[2], y[1]}; };
-    for_each_adams([&](auto method) {
+    for_each_type<adams_methods>([&](auto method) {
         using M = decltype(method);
         odestep::adams<M, state> a;
         odestep::adams<M, state> b;
@@ -357,7 +319,7 @@ TEST_CASE("adams: both right-hand-side signatures give bit-identical runs") {
 }
 
 TEST_CASE("adams: a different dt or a wrong t returns step_mismatch, evaluates nothing, and changes nothing") {
-    for_each_adams([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         using stepper_t = odestep::adams<M, state>;
         constexpr std::size_t steps = 12;
@@ -398,7 +360,7 @@ TEST_CASE("adams: after a step whose end time overflows to Inf, no time continue
     // around an infinite expected time must not admit everything). y' = 0, so that y stays finite whatever dt.
     const double big = std::numeric_limits<double>::max();
     auto still = [](double, const state&, state& dydt) { dydt = state{}; };
-    for_each_adams([big, still](auto method) {
+    for_each_type<adams_methods>([big, still](auto method) {
         using stepper_t = odestep::adams<decltype(method), state>;
         stepper_t stepper;
         state y = y_start;
@@ -413,7 +375,7 @@ TEST_CASE("adams: after a step whose end time overflows to Inf, no time continue
 
 TEST_CASE("adams: t within a few ULPs of the expected time is accepted, as the times of a step counter are") {
     // The check allows 8 ULPs of |t| + |dt| + |t_first|; t0 + i dt and t_prev + dt differ by a few.
-    for_each_adams([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         using stepper_t = odestep::adams<M, state>;
         constexpr std::size_t steps = 10;
@@ -457,7 +419,7 @@ TEST_CASE("adams: counter times t0 + i dt are accepted across zero and over 10^6
 
 TEST_CASE(
     "adams: the first step after construction or reset accepts any t and dt, and reset restarts with the starter") {
-    for_each_adams([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         using stepper_t = odestep::adams<M, state>;
         stepper_t stepper;
@@ -492,7 +454,7 @@ TEST_CASE(
 TEST_CASE(
     "adams: a NaN or Inf from any evaluation rolls the step back, y and history, and a retry continues "
     "bit-identically") {
-    for_each_adams([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         using stepper_t = odestep::adams<M, state>;
         const double inf = std::numeric_limits<double>::infinity();
@@ -549,7 +511,7 @@ TEST_CASE("adams: a new state that overflows to Inf, from finite derivatives, is
 TEST_CASE(
     "adams: integrate over a whole number of steps works and equals integrate_n_steps; a run that needs a shortened "
     "last step is refused with step_mismatch before anything is touched") {
-    for_each_adams([](auto method) {
+    for_each_type<adams_methods>([](auto method) {
         using M = decltype(method);
         using stepper_t = odestep::adams<M, state>;
         INFO(doctest::String(M::name));

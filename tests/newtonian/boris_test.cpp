@@ -9,9 +9,11 @@
 #include <cmath>
 #include <complex>
 #include <cstddef>
-#include <cstring>
 #include <limits>
 #include <utility>
+
+#include "support/compare.hpp"
+#include "support/order_fit.hpp"
 
 namespace {
 
@@ -19,10 +21,9 @@ template <class T>
 using vec3 = std::array<T, 3>;
 using v3 = vec3<double>;
 
-template <class State>
-bool same_bits(const State& a, const State& b) {
-    return std::memcmp(a.data(), b.data(), sizeof(a)) == 0;
-}
+using odestep_test::fitted_order;
+using odestep_test::max_abs_difference;
+using odestep_test::same_bits;
 
 template <class T>
 T norm(const vec3<T>& a) {
@@ -75,27 +76,6 @@ struct exact_crossed {
     }
 };
 
-template <class T>
-T max_diff(const vec3<T>& a, const vec3<T>& b) {
-    return std::fmax(std::fabs(a[0] - b[0]), std::fmax(std::fabs(a[1] - b[1]), std::fabs(a[2] - b[2])));
-}
-
-// Least-squares slope of log(error) against log(dt) for dt halving: the observed order.
-template <std::size_t K>
-double slope(const std::array<double, K>& errors) {
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (std::size_t k = 0; k < K; ++k) {
-        const double lx = -static_cast<double>(k) * std::log(2.0);  // log(dt / dt_0)
-        const double ly = std::log(errors[k]);
-        sx += lx;
-        sy += ly;
-        sxx += lx * lx;
-        sxy += lx * ly;
-    }
-    const double n = static_cast<double>(K);
-    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
 // The angle from a to b about z (in the x-y plane), in (-pi, pi].
 double turn_angle(const v3& a, const v3& b) { return std::atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]); }
 
@@ -116,8 +96,8 @@ void boris_crossed_errors(const exact_crossed& ex, double t_end, std::size_t n, 
     ex.at(static_cast<double>(r.t), xe, ve);
     const v3 xd{static_cast<double>(x[0]), static_cast<double>(x[1]), static_cast<double>(x[2])};
     const v3 vd{static_cast<double>(v[0]), static_cast<double>(v[1]), static_cast<double>(v[2])};
-    ex_err = max_diff(xd, xe);
-    ev_err = max_diff(vd, ve);
+    ex_err = max_abs_difference(xd, xe);
+    ev_err = max_abs_difference(vd, ve);
 }
 
 // The 6x6 Jacobian determinant of a map z -> F(z) of (x, v) by central differences, in long double, by
@@ -336,7 +316,7 @@ TEST_CASE("boris: in crossed fields the guiding centre drifts at E x B / B^2 = (
         CHECK(std::fabs(x[1]) <= 1e-10);
         CHECK(std::fabs(x[2] - 0.2 * r.t) <= 1e-10);
         REQUIRE(pusher.synchronize(fields, x, v, r.t, dt) == odestep::status::ok);
-        CHECK(max_diff(v, v3{0, 0, 0.2}) <= 1e-12);  // back at rest (across B) after whole periods
+        CHECK(max_abs_difference(v, v3{0, 0, 0.2}) <= 1e-12);  // back at rest (across B) after whole periods
     }
     SUBCASE(
         "with any dt, the average velocity over many gyro-periods is E/B within the orbit's diameter over the time") {
@@ -370,7 +350,7 @@ TEST_CASE("boris: observed order 2 on the exact crossed-field motion (step halvi
     for (std::size_t k = 0; k < ex_errors.size(); ++k) {
         boris_crossed_errors<double>(ex, 10.0, std::size_t{50} << k, ex_errors[k], ev_errors[k]);
     }
-    const double px = slope(ex_errors), pv = slope(ev_errors);
+    const double px = fitted_order(ex_errors), pv = fitted_order(ev_errors);
     MESSAGE("observed order: x ", px, ", v ", pv, "; x error at dt = 0.2: ", ex_errors[0]);
     CHECK(std::fabs(px - 2.0) <= 0.2);
     CHECK(std::fabs(pv - 2.0) <= 0.2);
@@ -442,17 +422,17 @@ TEST_CASE("boris: stagger and synchronize are each other's inverse, for both pus
             const odestep::boris<v3> pusher(-1.7);
             v3 v = v0;
             REQUIRE(pusher.stagger(fields, x, v, 0.4, dt) == odestep::status::ok);
-            CHECK(max_diff(v, v0) > 1e-3);
+            CHECK(max_abs_difference(v, v0) > 1e-3);
             REQUIRE(pusher.synchronize(fields, x, v, 0.4, dt) == odestep::status::ok);
-            CHECK(max_diff(v, v0) <= 1e-15);
+            CHECK(max_abs_difference(v, v0) <= 1e-15);
         }
         {
             const odestep::boris_relativistic<v3> pusher(-1.7, 1.5);
             v3 u = v0;
             REQUIRE(pusher.stagger(fields, x, u, 0.4, dt) == odestep::status::ok);
-            CHECK(max_diff(u, v0) > 1e-3);
+            CHECK(max_abs_difference(u, v0) > 1e-3);
             REQUIRE(pusher.synchronize(fields, x, u, 0.4, dt) == odestep::status::ok);
-            CHECK(max_diff(u, v0) <= 1e-15);
+            CHECK(max_abs_difference(u, v0) <= 1e-15);
         }
     }
 }
@@ -471,14 +451,14 @@ TEST_CASE(
         const auto r = odestep::integrate_n_steps(pusher, fields, x, v, 0.0, dt, n);
         REQUIRE(r.status == odestep::status::ok);
         REQUIRE(pusher.synchronize(fields, x, v, r.t, dt) == odestep::status::ok);
-        CHECK(max_diff(x, x0) > 1.0);  // it went somewhere
+        CHECK(max_abs_difference(x, x0) > 1.0);  // it went somewhere
         REQUIRE(pusher.stagger(fields, x, v, r.t, -dt) == odestep::status::ok);
         const auto back = odestep::integrate_n_steps(pusher, fields, x, v, r.t, -dt, n);
         REQUIRE(back.status == odestep::status::ok);
         REQUIRE(pusher.synchronize(fields, x, v, back.t, -dt) == odestep::status::ok);
         CHECK(std::fabs(back.t) <= 1e-13);
-        CHECK(max_diff(x, x0) <= tolerance);
-        CHECK(max_diff(v, v0) <= tolerance);
+        CHECK(max_abs_difference(x, x0) <= tolerance);
+        CHECK(max_abs_difference(v, v0) <= tolerance);
     };
     there_and_back(odestep::boris<v3>(1.3), 1e-12);
     there_and_back(odestep::boris_relativistic<v3>(1.3, 2.0), 1e-12);
@@ -636,10 +616,10 @@ TEST_CASE("boris_relativistic: observed order 2 on the exact helix in a uniform 
         const auto r = odestep::integrate_n_steps(pusher, fields, x, u, 0.0, dt, n);
         REQUIRE(r.status == odestep::status::ok);
         REQUIRE(pusher.synchronize(fields, x, u, r.t, dt) == odestep::status::ok);
-        ex[k] = max_diff(x, x_exact);
-        eu[k] = max_diff(u, u_exact);
+        ex[k] = max_abs_difference(x, x_exact);
+        eu[k] = max_abs_difference(u, u_exact);
     }
-    const double px = slope(ex), pu = slope(eu);
+    const double px = fitted_order(ex), pu = fitted_order(eu);
     MESSAGE("relativistic observed order: x ", px, ", u ", pu);
     CHECK(std::fabs(px - 2.0) <= 0.2);
     CHECK(std::fabs(pu - 2.0) <= 0.2);
@@ -661,7 +641,8 @@ TEST_CASE("boris_relativistic: at small velocities it agrees with the non-relati
     const v3 classical = run(odestep::boris<v3>(1.0));
     std::array<double, 2> diff{};
     const double cs[2] = {100.0, 1000.0};
-    for (std::size_t k = 0; k < 2; ++k) diff[k] = max_diff(run(odestep::boris_relativistic<v3>(1.0, cs[k])), classical);
+    for (std::size_t k = 0; k < 2; ++k)
+        diff[k] = max_abs_difference(run(odestep::boris_relativistic<v3>(1.0, cs[k])), classical);
     // The main effect: the gyration at omega_c / gamma, with gamma - 1 <= v_max^2 / (2 c^2), slips the phase
     // by omega_c t v_max^2 / (2 c^2) on the gyroradius R = 1 (|v - E/B x-hat| = |(-0.8, 0.6)| = 1, omega_c = 1);
     // v_max = |(0.5 + 1, 0, 0.2)| = 1.52 (drift plus gyration, and v_z). The bound is twice that, for the
@@ -706,9 +687,9 @@ TEST_CASE("boris: float runs give the double result to within float round-off, f
     // = 400 x 0.023 x 6e-8 = 5.5e-7 on a gyroradius below 1. About 3e-6 in all; the bound allows 1e-5.
     const v3 xf_d{static_cast<double>(x_f[0]), static_cast<double>(x_f[1]), static_cast<double>(x_f[2])};
     const v3 uf_d{static_cast<double>(u_f[0]), static_cast<double>(u_f[1]), static_cast<double>(u_f[2])};
-    CHECK(max_diff(xf_d, x_d) <= 1e-5);
-    CHECK(max_diff(uf_d, u_d) <= 1e-5);
-    MESSAGE("relativistic float - double: x ", max_diff(xf_d, x_d), ", u ", max_diff(uf_d, u_d));
+    CHECK(max_abs_difference(xf_d, x_d) <= 1e-5);
+    CHECK(max_abs_difference(uf_d, u_d) <= 1e-5);
+    MESSAGE("relativistic float - double: x ", max_abs_difference(xf_d, x_d), ", u ", max_abs_difference(uf_d, u_d));
     CHECK(std::fabs(norm(u_f) / static_cast<float>(norm(u_d)) - 1.0f) <= 64 * std::numeric_limits<float>::epsilon());
 }
 

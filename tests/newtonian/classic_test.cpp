@@ -6,64 +6,39 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <cstring>
 #include <limits>
 #include <tuple>
 
+#include "support/compare.hpp"
+#include "support/counting.hpp"
+#include "support/methods.hpp"
+#include "support/order_fit.hpp"
+#include "support/problems.hpp"
+#include "support/type_list.hpp"
+
 namespace {
 
-template <class T>
-using vec2 = std::array<T, 2>;
-
-// Kepler's problem with GM = 1: a = -x / |x|^3. From x = (1, 0), v = (0, 1) the orbit is the unit circle,
-// x = (cos t, sin t), v = (-sin t, cos t): nonlinear, with a closed form at every t.
-struct kepler {
-    template <class T>
-    vec2<T> operator()(T, const vec2<T>& x) const noexcept {
-        const T r2 = x[0] * x[0] + x[1] * x[1];
-        const T r3 = r2 * std::sqrt(r2);
-        return {-x[0] / r3, -x[1] / r3};
-    }
-};
+using odestep_test::for_each_type;
+using odestep_test::kepler;  // a = -x / |x|^3, GM = 1
+using odestep_test::same_bits;
+using odestep_test::vec2;
 
 // Counts its calls; the harmonic oscillator a = -x.
-struct counting_oscillator {
-    std::size_t* calls;
-    vec2<double> operator()(double, const vec2<double>& x) const noexcept {
-        ++*calls;
-        return {-x[0], -x[1]};
-    }
-};
+using counting_oscillator = odestep_test::counting<odestep_test::spring>;
 
-template <class State>
-bool same_bits(const State& a, const State& b) {
-    return std::memcmp(a.data(), b.data(), sizeof(a)) == 0;
-}
-
+// The largest error in x and v at t_end after `steps` steps on Kepler's circular orbit (problems.hpp).
 template <class Stepper, class T>
 T circular_orbit_error(T t_end, std::size_t steps) {
+    using orbit = odestep_test::circular_orbit;
     Stepper stepper;
-    vec2<T> x{T(1), T(0)};
-    vec2<T> v{T(0), T(1)};
+    vec2<T> x = orbit::start_x<T>();
+    vec2<T> v = orbit::start_v<T>();
     const auto r = odestep::integrate_n_steps(stepper, kepler{}, x, v, T(0), t_end / static_cast<T>(steps), steps);
     REQUIRE(r.status == odestep::status::ok);
-    const T e = std::fmax(std::fabs(x[0] - std::cos(t_end)), std::fabs(x[1] - std::sin(t_end)));
-    return std::fmax(e, std::fmax(std::fabs(v[0] + std::sin(t_end)), std::fabs(v[1] - std::cos(t_end))));
+    return odestep_test::max_abs_difference(x, orbit::x_at(t_end), v, orbit::v_at(t_end));
 }
 
-using newtonian_methods = std::tuple<odestep::newtonian_euler<vec2<double>>, odestep::newtonian_midpoint<vec2<double>>,
-                                     odestep::newtonian_euler_richardson<vec2<double>>,
-                                     odestep::half_step<vec2<double>>, odestep::leapfrog_position_form<vec2<double>>,
-                                     odestep::beeman<vec2<double>>, odestep::predictor_corrector<vec2<double>>>;
-
-template <class F, class... M>
-void for_each_in(F&& f, std::tuple<M...>*) {
-    (f(M{}), ...);
-}
-template <class F>
-void for_each_newtonian(F&& f) {
-    for_each_in(f, static_cast<newtonian_methods*>(nullptr));
-}
+using newtonian_methods = odestep_test::classic_newtonian_steppers<vec2<double>>;
 
 template <class Stepper>
 const char* name_of() {
@@ -94,29 +69,21 @@ struct rebind<S<State>> {
 }  // namespace
 
 TEST_CASE("newtonian: every method reaches its order on the circular Kepler orbit (slope within 0.2)") {
-    for_each_newtonian([](auto method) {
+    for_each_type<newtonian_methods>([](auto method) {
         using S = decltype(method);
         // First-order methods need smaller steps to leave the pre-asymptotic range (local slopes 0.89 to
         // 0.99 for N = 512 to 16384 at t = 5); the second-order ones are asymptotic from N = 64.
         const std::size_t n0 = S::order == 1 ? 2048 : 128;
         std::array<double, 4> errors{};
         for (std::size_t i = 0; i < errors.size(); ++i) errors[i] = circular_orbit_error<S, double>(5.0, n0 << i);
-        double sx = 0, sy = 0, sxx = 0, sxy = 0;
-        for (std::size_t i = 0; i < errors.size(); ++i) {
-            const double px = -std::log(2.0) * static_cast<double>(i);
-            sx += px;
-            sy += std::log(errors[i]);
-            sxx += px * px;
-            sxy += px * std::log(errors[i]);
-        }
-        const double slope = (4 * sxy - sx * sy) / (4 * sxx - sx * sx);
+        const double slope = odestep_test::fitted_order(errors);
         MESSAGE(doctest::String(name_of<S>()), ": order ", S::order, ", fitted slope ", slope);
         CHECK(std::fabs(slope - S::order) < 0.2);
     });
 }
 
 TEST_CASE("newtonian: every method works in float, to its double accuracy plus float round-off") {
-    for_each_newtonian([](auto method) {
+    for_each_type<newtonian_methods>([](auto method) {
         using S = decltype(method);
         using Sf = typename rebind<S>::template to<float>;
         const std::size_t n = 256;
@@ -135,8 +102,8 @@ TEST_CASE("newtonian_euler: on the oscillator the energy grows by exactly (1 + d
     vec2<double> v{0.0, 0.5};
     const double e0 = x[0] * x[0] + x[1] * x[1] + v[0] * v[0] + v[1] * v[1];
     const double dt = 0.01;
-    const auto r = odestep::integrate_n_steps(odestep::newtonian_euler<vec2<double>>{}, counting_oscillator{&calls}, x,
-                                              v, 0.0, dt, 1000);
+    const auto r = odestep::integrate_n_steps(odestep::newtonian_euler<vec2<double>>{}, counting_oscillator{{}, &calls},
+                                              x, v, 0.0, dt, 1000);
     REQUIRE(r.status == odestep::status::ok);
     const double e = x[0] * x[0] + x[1] * x[1] + v[0] * v[0] + v[1] * v[1];
     CHECK(e / e0 == doctest::Approx(std::pow(1 + dt * dt, 1000)).epsilon(1e-12));
@@ -154,7 +121,7 @@ TEST_CASE("newtonian_euler_richardson: the error estimate is the difference to t
     vec2<double> ex{};
     vec2<double> ev{};
     std::size_t calls = 0;
-    REQUIRE(odestep::newtonian_euler_richardson<vec2<double>>{}.step(counting_oscillator{&calls}, x, v, 0.0, dt, ex,
+    REQUIRE(odestep::newtonian_euler_richardson<vec2<double>>{}.step(counting_oscillator{{}, &calls}, x, v, 0.0, dt, ex,
                                                                      ev) == odestep::status::ok);
     CHECK(calls == 2);
     for (std::size_t i = 0; i < 2; ++i) {
@@ -174,23 +141,23 @@ TEST_CASE("newtonian: history-keeping methods make one evaluation per step once 
         std::size_t calls = 0;
         vec2<double> x{1.0, 0.0};
         vec2<double> v{0.0, 1.0};
-        REQUIRE(odestep::integrate_n_steps(stepper, counting_oscillator{&calls}, x, v, 0.0, 0.01, 100).status ==
+        REQUIRE(odestep::integrate_n_steps(stepper, counting_oscillator{{}, &calls}, x, v, 0.0, 0.01, 100).status ==
                 odestep::status::ok);
         CHECK(calls == 101);  // two on the first step, one on each of the other 99
         calls = 0;
-        REQUIRE(stepper.step(counting_oscillator{&calls}, x, v, 1.0, 0.01) == odestep::status::ok);
+        REQUIRE(stepper.step(counting_oscillator{{}, &calls}, x, v, 1.0, 0.01) == odestep::status::ok);
         CHECK(calls == 1);  // continues: t = 1 is where the history expects it
         stepper.reset();
         calls = 0;
-        REQUIRE(stepper.step(counting_oscillator{&calls}, x, v, 1.01, 0.01) == odestep::status::ok);
+        REQUIRE(stepper.step(counting_oscillator{{}, &calls}, x, v, 1.01, 0.01) == odestep::status::ok);
         CHECK(calls == 2);  // after reset(): a fresh start
         calls = 0;
         vec2<double> other_x = x;
         vec2<double> other_v = v;
-        REQUIRE(stepper.step(counting_oscillator{&calls}, other_x, other_v, 1.02, 0.01) == odestep::status::ok);
+        REQUIRE(stepper.step(counting_oscillator{{}, &calls}, other_x, other_v, 1.02, 0.01) == odestep::status::ok);
         CHECK(calls == 2);  // another state object: never someone else's history
         calls = 0;
-        REQUIRE(stepper.step(counting_oscillator{&calls}, other_x, other_v, 1.03, 0.02) == odestep::status::ok);
+        REQUIRE(stepper.step(counting_oscillator{{}, &calls}, other_x, other_v, 1.03, 0.02) == odestep::status::ok);
         CHECK(calls == 2);  // another dt: a new grid, a fresh start
     };
     // check takes its own copy of each stepper and keeps it across the calls above
@@ -209,11 +176,11 @@ TEST_CASE("newtonian: far from t = 0 the counter's times still continue the hist
     odestep::half_step<vec2<double>> stepper;
     vec2<double> x{1.0, 0.0};
     vec2<double> v{0.0, 1.0};
-    REQUIRE(odestep::integrate_n_steps(stepper, counting_oscillator{&calls}, x, v, -1000.0, 0.1, 20000).status ==
+    REQUIRE(odestep::integrate_n_steps(stepper, counting_oscillator{{}, &calls}, x, v, -1000.0, 0.1, 20000).status ==
             odestep::status::ok);
     CHECK(calls == 20001);
     calls = 0;
-    (void)stepper.step(counting_oscillator{&calls}, x, v, std::numeric_limits<double>::infinity(), 0.1);
+    (void)stepper.step(counting_oscillator{{}, &calls}, x, v, std::numeric_limits<double>::infinity(), 0.1);
     CHECK(calls == 2);  // a fresh start (this force ignores t), never a continuation of the history
 }
 
@@ -230,9 +197,9 @@ TEST_CASE("newtonian: the reversible methods return to their start after N steps
         vec2<double> v{0.0, 0.5};
         const vec2<double> x0 = x;
         const vec2<double> v0 = v;
-        REQUIRE(odestep::integrate(stepper, counting_oscillator{&calls}, x, v, 0.0, 10.0, 0.01).status ==
+        REQUIRE(odestep::integrate(stepper, counting_oscillator{{}, &calls}, x, v, 0.0, 10.0, 0.01).status ==
                 odestep::status::ok);
-        REQUIRE(odestep::integrate(stepper, counting_oscillator{&calls}, x, v, 10.0, 0.0, -0.01).status ==
+        REQUIRE(odestep::integrate(stepper, counting_oscillator{{}, &calls}, x, v, 10.0, 0.0, -0.01).status ==
                 odestep::status::ok);
         const double ulp = std::numeric_limits<double>::epsilon();
         for (std::size_t i = 0; i < 2; ++i) {
@@ -277,7 +244,7 @@ TEST_CASE("predictor_corrector: a zero, negative or NaN tolerance is invalid_tol
 }
 
 TEST_CASE("newtonian: a NaN or Inf from the force rolls every method back, bit for bit") {
-    for_each_newtonian([](auto method) {
+    for_each_type<newtonian_methods>([](auto method) {
         using S = decltype(method);
         for (std::size_t poisoned = 1; poisoned <= 3; ++poisoned) {
             S stepper;
@@ -351,10 +318,7 @@ TEST_CASE("beeman, caller's history: exact under a constant force, and the histo
     using S = std::array<double, 1>;
     const double g = 9.75;  // 39/4
     std::size_t calls = 0;
-    auto gravity = [&calls, g](double, const S&) {
-        ++calls;
-        return S{-g};
-    };
+    const odestep_test::counting<odestep_test::uniform_gravity<double>> gravity{{g}, &calls};
     const odestep::beeman<S> stepper;  // const: the caller keeps everything
     odestep::beeman<S>::history hist{};
     CHECK_FALSE(hist.started);

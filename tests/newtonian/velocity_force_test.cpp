@@ -6,9 +6,14 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <cstring>
 #include <limits>
 #include <tuple>
+
+#include "support/compare.hpp"
+#include "support/counting.hpp"
+#include "support/methods.hpp"
+#include "support/problems.hpp"
+#include "support/type_list.hpp"
 
 namespace {
 
@@ -22,11 +27,7 @@ double damped_exact(double t) {
     return std::exp(-damping * t / 2.0) * (std::cos(w * t) + damping / (2.0 * w) * std::sin(w * t));
 }
 struct damped {
-    std::size_t* calls = nullptr;
-    s1 operator()(double, const s1& x, const s1& v) const {
-        if (calls != nullptr) ++*calls;
-        return s1{-x[0] - damping * v[0]};
-    }
+    s1 operator()(double, const s1& x, const s1& v) const { return s1{-x[0] - damping * v[0]}; }
 };
 
 template <class Stepper>
@@ -39,19 +40,8 @@ double damped_error(std::uint64_t n) {
     return std::fabs(x[0] - damped_exact(2.0));
 }
 
-using velocity_steppers =
-    std::tuple<odestep::euler_cromer<s1>, odestep::euler_cromer_drift_first<s1>, odestep::velocity_verlet<s1>,
-               odestep::position_verlet<s1>, odestep::forest_ruth<s1>, odestep::yoshida6<s1>, odestep::blanes_moan4<s1>,
-               odestep::beeman<s1>>;
-
-template <class Fn, std::size_t... I>
-void for_each_stepper(Fn&& fn, std::index_sequence<I...>) {
-    (fn(std::tuple_element_t<I, velocity_steppers>{}), ...);
-}
-template <class Fn>
-void for_each_stepper(Fn&& fn) {
-    for_each_stepper(fn, std::make_index_sequence<std::tuple_size_v<velocity_steppers>>{});
-}
+// Every splitting, and Beeman.
+using velocity_steppers = odestep_test::concat<odestep_test::splitting_steppers<s1>, std::tuple<odestep::beeman<s1>>>;
 
 }  // namespace
 
@@ -77,8 +67,8 @@ TEST_CASE("velocity forces: Euler-Cromer with drag is v += a(t, x, v) dt, then x
             hx[i] = hx[i] + dt * hv[i];
         }
     }
-    CHECK(std::memcmp(x.data(), hx.data(), sizeof x) == 0);
-    CHECK(std::memcmp(v.data(), hv.data(), sizeof v) == 0);
+    CHECK(odestep_test::same_bits(x, hx));
+    CHECK(odestep_test::same_bits(v, hv));
     CHECK(v[1] < 0.0);
     CHECK(v[1] > -30.0);  // below the terminal speed
 }
@@ -86,7 +76,7 @@ TEST_CASE("velocity forces: Euler-Cromer with drag is v += a(t, x, v) dt, then x
 TEST_CASE("velocity forces: every splitting method and Beeman accept a(t, x, v) and converge with order 1") {
     // With the velocity at hand in each kick, the term a_v a of the local error is missed: first order for
     // every method (measured slopes 0.99 to 1.01), so they are published with order 1 for this use.
-    for_each_stepper([](auto stepper) {
+    odestep_test::for_each_type<velocity_steppers>([](auto stepper) {
         using S = decltype(stepper);
         static_assert(S::velocity_forces);
         static_assert(!odestep::is_symplectic_with_v<S, damped>);
@@ -99,9 +89,8 @@ TEST_CASE("velocity forces: every splitting method and Beeman accept a(t, x, v) 
         CHECK(e2 < e1);
     });
     // With a force of position alone the splitting methods stay symplectic.
-    auto spring = [](double, const s1& x) { return s1{-x[0]}; };
-    static_assert(odestep::is_symplectic_with_v<odestep::velocity_verlet<s1>, decltype(spring)>);
-    static_assert(!odestep::is_symplectic_with_v<odestep::beeman<s1>, decltype(spring)>);
+    static_assert(odestep::is_symplectic_with_v<odestep::velocity_verlet<s1>, odestep_test::spring>);
+    static_assert(!odestep::is_symplectic_with_v<odestep::beeman<s1>, odestep_test::spring>);
 }
 
 TEST_CASE("velocity forces: velocity Verlet keeps nothing with a(t, x, v), so every step evaluates twice") {
@@ -109,19 +98,17 @@ TEST_CASE("velocity forces: velocity Verlet keeps nothing with a(t, x, v), so ev
     std::size_t calls = 0;
     s1 x{1.0};
     s1 v{0.0};
-    for (int n = 0; n < 10; ++n) REQUIRE(stepper.step(damped{&calls}, x, v, 0.1 * n, 0.1) == odestep::status::ok);
+    const odestep_test::counting<damped> counted_damped{{}, &calls};
+    for (int n = 0; n < 10; ++n) REQUIRE(stepper.step(counted_damped, x, v, 0.1 * n, 0.1) == odestep::status::ok);
     CHECK(calls == 20);  // a position force costs 11 (one kept from step to step)
     std::size_t spring_calls = 0;
-    auto spring = [&](double, const s1& y) {
-        ++spring_calls;
-        return s1{-y[0]};
-    };
+    const odestep_test::counting<odestep_test::spring> spring{{}, &spring_calls};
     for (int n = 0; n < 10; ++n) REQUIRE(stepper.step(spring, x, v, 0.1 * n, 0.1) == odestep::status::ok);
     CHECK(spring_calls == 11);
 }
 
 TEST_CASE("velocity forces: a NaN from a(t, x, v) is non_finite and x, v are left as they were") {
-    for_each_stepper([](auto stepper) {
+    odestep_test::for_each_type<velocity_steppers>([](auto stepper) {
         bool poisoned = false;  // every step evaluates a at least once (nothing is kept with a(t, x, v))
         auto bad = [&](double, const s1& x, const s1& v) {
             return s1{poisoned ? std::numeric_limits<double>::quiet_NaN() : -x[0] - v[0]};
@@ -134,7 +121,7 @@ TEST_CASE("velocity forces: a NaN from a(t, x, v) is non_finite and x, v are lef
         const s1 v_good = v;
         poisoned = true;
         CHECK(stepper.step(bad, x, v, 0.2, 0.1) == odestep::status::non_finite);
-        CHECK(std::memcmp(x.data(), x_good.data(), sizeof x) == 0);
-        CHECK(std::memcmp(v.data(), v_good.data(), sizeof v) == 0);
+        CHECK(odestep_test::same_bits(x, x_good));
+        CHECK(odestep_test::same_bits(v, v_good));
     });
 }

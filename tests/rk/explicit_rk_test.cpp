@@ -5,29 +5,21 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <cstring>
 #include <limits>
 
+#include "support/compare.hpp"
+#include "support/counting.hpp"
 #include "support/methods.hpp"
+#include "support/problems.hpp"
 
 namespace {
 
 using state2 = std::array<double, 2>;
 
-template <class State>
-bool same_bits(const State& a, const State& b) {
-    return std::memcmp(a.data(), b.data(), sizeof(a)) == 0;
-}
+using odestep_test::same_bits;
 
 // Counts its calls; y' = (y1, -y0), the harmonic oscillator.
-struct counting_sho {
-    std::size_t* calls;
-    void operator()(double, const state2& y, state2& dydt) const noexcept {
-        ++*calls;
-        dydt[0] = y[1];
-        dydt[1] = -y[0];
-    }
-};
+using counting_sho = odestep_test::counting<odestep_test::harmonic>;
 
 struct expected_traits {
     int order;
@@ -92,12 +84,12 @@ TEST_CASE("explicit_rk: traits match the published tables, and a step makes exac
 
         std::size_t calls = 0;
         state2 y{1.0, 0.0};
-        REQUIRE(stepper{}.step(counting_sho{&calls}, y, 0.0, 0.1) == odestep::status::ok);
+        REQUIRE(stepper{}.step(counting_sho{{}, &calls}, y, 0.0, 0.1) == odestep::status::ok);
         CHECK(calls == e.evals);
         if constexpr (stepper::error_estimate) {
             calls = 0;
             state2 err{};
-            REQUIRE(stepper{}.step(counting_sho{&calls}, y, 0.0, 0.1, err) == odestep::status::ok);
+            REQUIRE(stepper{}.step(counting_sho{{}, &calls}, y, 0.0, 0.1, err) == odestep::status::ok);
             CHECK(calls == e.evals_with_error);
         }
     });
@@ -112,8 +104,8 @@ TEST_CASE("explicit_rk: the error-estimating step advances y exactly as the plai
             state2 a{0.3, -0.7};
             state2 b = a;
             state2 err{};
-            REQUIRE(stepper{}.step(counting_sho{&calls}, a, 0.0, 0.2) == odestep::status::ok);
-            REQUIRE(stepper{}.step(counting_sho{&calls}, b, 0.0, 0.2, err) == odestep::status::ok);
+            REQUIRE(stepper{}.step(counting_sho{{}, &calls}, a, 0.0, 0.2) == odestep::status::ok);
+            REQUIRE(stepper{}.step(counting_sho{{}, &calls}, b, 0.0, 0.2, err) == odestep::status::ok);
             INFO(doctest::String(M::name));
             CHECK(same_bits(a, b));
         }
@@ -131,7 +123,7 @@ TEST_CASE("midpoint: the error estimate is the Euler-Richardson difference h (k2
     std::size_t calls = 0;
     state2 y = y0;
     state2 err{};
-    REQUIRE(odestep::midpoint<state2>{}.step(counting_sho{&calls}, y, 0.0, h, err) == odestep::status::ok);
+    REQUIRE(odestep::midpoint<state2>{}.step(counting_sho{{}, &calls}, y, 0.0, h, err) == odestep::status::ok);
     CHECK(y[0] == doctest::Approx(y0[0] + h * k2[0]).epsilon(1e-15));
     CHECK(y[1] == doctest::Approx(y0[1] + h * k2[1]).epsilon(1e-15));
     CHECK(err[0] == doctest::Approx(h * (k2[0] - k1[0])).epsilon(1e-13));
@@ -149,7 +141,7 @@ TEST_CASE("embedded pairs: the error estimate shrinks like h^(p+1) of the embedd
                 std::size_t calls = 0;
                 state2 y{1.0, 0.0};
                 state2 err{};
-                REQUIRE(stepper{}.step(counting_sho{&calls}, y, 0.0, h, err) == odestep::status::ok);
+                REQUIRE(stepper{}.step(counting_sho{{}, &calls}, y, 0.0, h, err) == odestep::status::ok);
                 return std::hypot(err[0], err[1]);
             };
             const double ratio = estimate(0.1) / estimate(0.05);
@@ -167,7 +159,7 @@ TEST_CASE("dop853: the second (3rd-order) estimate shrinks like h^4") {
         state2 y{1.0, 0.0};
         state2 e5{};
         state2 e3{};
-        REQUIRE(stepper{}.step(counting_sho{&calls}, y, 0.0, h, e5, e3) == odestep::status::ok);
+        REQUIRE(stepper{}.step(counting_sho{{}, &calls}, y, 0.0, h, e5, e3) == odestep::status::ok);
         return std::array<double, 2>{std::hypot(e5[0], e5[1]), std::hypot(e3[0], e3[1])};
     };
     const auto coarse = estimates(0.1);
@@ -217,7 +209,7 @@ TEST_CASE("explicit_rk: a step of the oscillator agrees with its closed-form amp
     const double h = 0.3;
     state2 y{1.0, 0.0};
     std::size_t calls = 0;
-    REQUIRE(odestep::rk4<state2>{}.step(counting_sho{&calls}, y, 0.0, h) == odestep::status::ok);
+    REQUIRE(odestep::rk4<state2>{}.step(counting_sho{{}, &calls}, y, 0.0, h) == odestep::status::ok);
     CHECK(y[0] == doctest::Approx(1 - h * h / 2 + h * h * h * h / 24).epsilon(1e-15));
     CHECK(y[1] == doctest::Approx(-(h - h * h * h / 6)).epsilon(1e-15));
 }

@@ -7,36 +7,20 @@
 #include <cstddef>
 
 #include "support/methods.hpp"
+#include "support/order_fit.hpp"
+#include "support/problems.hpp"
 
 namespace {
 
-// A nonlinear autonomous system with a bounded closed-form solution:
-//   y0' = y0 y1,  y1' = -y2,  y2' = y1,  y(0) = (1, 1, 0)  =>  y1 = cos t, y2 = sin t, y0 = exp(sin t).
-// (y0' = exp(sin t) cos t = y0 y1.) Over many periods the truncation error grows linearly with time and
-// round-off only like the square root of the step count, which leaves room to see order 8 in double.
-template <class T>
-using state3 = std::array<T, 3>;
+using odestep_test::exp_sin;
+using odestep_test::state3;
 
-struct exp_sin {
-    template <class T>
-    void operator()(T, const state3<T>& y, state3<T>& dydt) const noexcept {
-        dydt[0] = y[0] * y[1];
-        dydt[1] = -y[2];
-        dydt[2] = y[1];
-    }
-};
-
-// Largest component error at t_end after `steps` steps of the method in T.
+// Largest component error at t_end after `steps` steps of the method in T, on exp_sin (problems.hpp: over
+// many periods its truncation error grows linearly with time and round-off only like the square root of the
+// step count, which leaves room to see order 8 in double).
 template <class Method, class T>
 T error_after(T t_end, std::size_t steps) {
-    odestep::explicit_rk<Method, state3<T>> stepper;
-    state3<T> y{T(1), T(1), T(0)};
-    const auto r = odestep::integrate_n_steps(stepper, exp_sin{}, y, T(0), t_end / static_cast<T>(steps), steps);
-    REQUIRE(r.status == odestep::status::ok);
-    const T e0 = std::fabs(y[0] - std::exp(std::sin(t_end)));
-    const T e1 = std::fabs(y[1] - std::cos(t_end));
-    const T e2 = std::fabs(y[2] - std::sin(t_end));
-    return std::fmax(e0, std::fmax(e1, e2));
+    return odestep_test::error_after<odestep::explicit_rk<Method, state3<T>>, exp_sin>(t_end, steps);
 }
 
 // Where each order is in its asymptotic regime yet, at the finest step, far above double round-off
@@ -58,22 +42,6 @@ constexpr fit_plan plan_for(int order) {
     }
 }
 
-// Least-squares slope of log(error) against log(h) over h, h/2, h/4, ...
-template <std::size_t K>
-double fitted_order(const std::array<double, K>& errors, std::size_t count) {
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (std::size_t i = 0; i < count; ++i) {
-        const double x = -std::log(2.0) * static_cast<double>(i);  // log(h_i / h_0)
-        const double yv = std::log(errors[i]);
-        sx += x;
-        sy += yv;
-        sxx += x * x;
-        sxy += x * yv;
-    }
-    const double n = static_cast<double>(count);
-    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
 template <class M, class T>
 void check_order(const fit_plan& plan) {
     constexpr int order = odestep::explicit_rk<M, state3<T>>::order;
@@ -81,8 +49,10 @@ void check_order(const fit_plan& plan) {
     const std::size_t points = plan.halvings + 1;
     for (std::size_t i = 0; i < points; ++i)
         errors[i] = static_cast<double>(error_after<M, T>(static_cast<T>(plan.t_end), plan.coarsest_steps << i));
-    const double slope = fitted_order(errors, points);
-    INFO(doctest::String(M::name), ": errors ", errors[0], " ", errors[1], " ", errors[2], " ", errors[3]);
+    const double slope = odestep_test::fitted_order(errors, points);
+    const auto local = odestep_test::local_slopes(errors, points);
+    INFO(doctest::String(M::name), ": errors ", errors[0], " ", errors[1], " ", errors[2], " ", errors[3],
+         "; local slopes ", local[0], " ", local[1], " ", local[2]);
     MESSAGE(doctest::String(M::name), ": order ", order, ", fitted slope ", slope, " (",
             doctest::String(sizeof(T) == sizeof(double) ? "double" : "long double"), ", error ", errors[0], " to ",
             errors[points - 1], ")");

@@ -11,24 +11,15 @@
 #include <limits>
 #include <tuple>
 
+#include "support/methods.hpp"
+#include "support/type_list.hpp"
+
 namespace {
 
-using all_finders =
-    std::tuple<odestep::bisection, odestep::illinois, odestep::anderson_bjorck, odestep::brent, odestep::itp>;
+using all_finders = odestep_test::root_finders;
 using secant_family = std::tuple<odestep::illinois, odestep::anderson_bjorck, odestep::brent>;
 
-template <class F, class... M>
-void for_each_in(F&& f, std::tuple<M...>*) {
-    (f(M{}), ...);
-}
-template <class F>
-void for_each_finder(F&& f) {
-    for_each_in(f, static_cast<all_finders*>(nullptr));
-}
-template <class F>
-void for_each_secant(F&& f) {
-    for_each_in(f, static_cast<secant_family*>(nullptr));
-}
+using odestep_test::for_each_type;
 
 // (doctest prints a const char* as a pointer; a doctest::String as text)
 doctest::String name_of(odestep::bisection) { return "bisection"; }
@@ -238,7 +229,7 @@ static_assert(odestep::brent::worst_case_evaluations(std::numeric_limits<double>
 }  // namespace
 
 TEST_CASE("bracket: every finder brackets each test root within its worst-case count, in double and float") {
-    for_each_finder([](auto finder) {
+    for_each_type<all_finders>([](auto finder) {
         using finder_t = decltype(finder);
         check_all_problems<finder_t, double>();
         check_all_problems<finder_t, float>();
@@ -269,14 +260,14 @@ TEST_CASE("bracket: on a line the secant family needs one call to land on the ro
         CHECK(odestep::detail::abs_value(log.x[0] - T(0.25)) < T(16) * std::numeric_limits<T>::epsilon());
         CHECK(r.b - r.a <= tol);
     };
-    for_each_secant([&](auto finder) {
+    for_each_type<secant_family>([&](auto finder) {
         check(finder, 0.0);
         check(finder, 0.0f);
     });
 }
 
 TEST_CASE("bracket: a bracket already within tol makes no call") {
-    for_each_finder([](auto finder) {
+    for_each_type<all_finders>([](auto finder) {
         INFO(name_of(finder));
         std::size_t calls = 0;
         auto f = [&](double x) {
@@ -300,7 +291,7 @@ TEST_CASE("bracket: a bracket already within tol makes no call") {
 }
 
 TEST_CASE("bracket: the cap bounds the calls; the bracket is still valid, not converged") {
-    for_each_finder([](auto finder) {
+    for_each_type<all_finders>([](auto finder) {
         INFO(name_of(finder));
         call_log<double> log;
         auto f = [&](double x) {
@@ -333,7 +324,7 @@ TEST_CASE("bracket: NaN or Inf from f stops the search at once with the bracket 
     const double bad_values[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
                                  -std::numeric_limits<double>::infinity()};
     for (const double bad : bad_values) {
-        for_each_finder([&](auto finder) {
+        for_each_type<all_finders>([&](auto finder) {
             INFO(name_of(finder), " returning ", bad);
             call_log<double> log;
             auto f = [&](double x) {
@@ -359,7 +350,7 @@ TEST_CASE("bracket: NaN or Inf from f stops the search at once with the bracket 
 
 TEST_CASE("bracket: an exact zero at b on entry: b stays, a comes within tol of it from the left") {
     // f(x) = x - 0.5 on [0, 0.5]: f(b) = 0, f < 0 everywhere to the left of b.
-    for_each_finder([](auto finder) {
+    for_each_type<all_finders>([](auto finder) {
         INFO(name_of(finder));
         call_log<double> log;
         auto f = [&](double x) {
@@ -378,7 +369,7 @@ TEST_CASE("bracket: an exact zero at b on entry: b stays, a comes within tol of 
         check_calls(log, 0.0, -0.5, 0.5, 0.0, r);
     });
     // The secant family tries tol / 2 left of a zero at once: one call.
-    for_each_secant([](auto finder) {
+    for_each_type<secant_family>([](auto finder) {
         INFO(name_of(finder));
         const double tol = relative_tol(0.0, 0.5);
         const auto r = decltype(finder)::narrow([](double x) { return x - 0.5; }, 0.0, -0.5, 0.5, 0.0, tol, 200);
@@ -388,7 +379,7 @@ TEST_CASE("bracket: an exact zero at b on entry: b stays, a comes within tol of 
 }
 
 TEST_CASE("bracket: a tol below the spacing of T stops at adjacent values, unconverged, with no call outside") {
-    for_each_finder([](auto finder) {
+    for_each_type<all_finders>([](auto finder) {
         INFO(name_of(finder));
         call_log<double> log;
         auto f = [&](double x) {
