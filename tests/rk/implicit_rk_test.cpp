@@ -140,7 +140,7 @@ double observed_order(std::size_t coarsest) {
     std::array<double, 4> errors{};
     for (std::size_t i = 0; i < 4; ++i) errors[i] = error_exp_sin<Stepper>(coarsest << i);
     MESSAGE("errors " << errors[0] << " ... " << errors[3]);
-    return odestep_test::fitted_slope(errors);
+    return odestep_test::fitted_order(errors);
 }
 
 }  // namespace

@@ -169,7 +169,7 @@ TEST_CASE("rosenbrock: RODAS3 shows order 3, autonomous and not (df/dt by differ
     };
     std::array<double, 4> e{};
     for (std::size_t i = 0; i < 4; ++i) e[i] = error_exp_sin(100u << i);
-    CHECK(odestep_test::fitted_slope(e) == doctest::Approx(3.0).epsilon(0.03));
+    CHECK(odestep_test::fitted_order(e) == doctest::Approx(3.0).epsilon(0.03));
     auto error_forced = [](std::size_t steps) {
         state1<double> y{0};
         REQUIRE(odestep::integrate_n_steps(odestep::rodas3<state1<double>>{}, forced<double>{}, y, 0.0,
@@ -179,7 +179,7 @@ TEST_CASE("rosenbrock: RODAS3 shows order 3, autonomous and not (df/dt by differ
     };
     for (std::size_t i = 0; i < 4; ++i) e[i] = error_forced(20u << i);
     MESSAGE("forced: " << e[0] << " ... " << e[3]);
-    CHECK(odestep_test::fitted_slope(e) == doctest::Approx(3.0).epsilon(0.05));
+    CHECK(odestep_test::fitted_order(e) == doctest::Approx(3.0).epsilon(0.05));
 }
 
 TEST_CASE("rosenbrock: RODAS3 on Robertson reaches Hairer & Wanner's values at t = 40, in double and float") {

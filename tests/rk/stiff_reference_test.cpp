@@ -74,7 +74,7 @@ double prothero_robinson_slope(double lambda, std::size_t n0) {
         REQUIRE(odestep::integrate_n_steps(Stepper{}, sys, y, 0.0, 10.0 / double(n), n).status == odestep::status::ok);
         e[i] = std::fabs(y[0] - std::sin(10.0));
     }
-    const double slope = odestep_test::fitted_slope(e);
+    const double slope = odestep_test::fitted_order(e);
     MESSAGE("lambda " << lambda << ": errors " << e[0] << " ... " << e[3] << ", slope " << slope);
     return slope;
 }

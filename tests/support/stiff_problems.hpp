@@ -5,6 +5,9 @@
 
 #include <odestep/odestep.hpp>
 
+#include "order_fit.hpp"
+#include "problems.hpp"
+
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -14,8 +17,6 @@ namespace odestep_test {
 // ---- Robertson's chemical kinetics (Robertson 1966; Hairer & Wanner, Solving ODE II, Sec. IV.1, (1.3)):
 //   y1' = -0.04 y1 + 1e4 y2 y3,  y2' = 0.04 y1 - 1e4 y2 y3 - 3e7 y2^2,  y3' = 3e7 y2^2,  y(0) = (1, 0, 0).
 // y1 + y2 + y3 = 1 is a linear invariant, which every Runge-Kutta and Rosenbrock method keeps.
-template <class T>
-using state3 = std::array<T, 3>;
 
 struct robertson {
     template <class T>
@@ -80,16 +81,7 @@ struct rc_jacobian {
     void operator()(T, const state1<T>&, odestep::jacobian_t<state1<T>>& j) const noexcept { j[0][0] = T(-1) / rc; }
 };
 
-// ---- A smooth nonlinear problem with a closed form (the explicit methods' order test):
-//   y0' = y0 y1, y1' = -y2, y2' = y1, y(0) = (1, 1, 0)  =>  y1 = cos t, y2 = sin t, y0 = exp(sin t).
-struct exp_sin {
-    template <class T>
-    void operator()(T, const state3<T>& y, state3<T>& d) const noexcept {
-        d[0] = y[0] * y[1];
-        d[1] = -y[2];
-        d[2] = y[1];
-    }
-};
+// ---- The Jacobian of exp_sin (support/problems.hpp): y0' = y0 y1, y1' = -y2, y2' = y1.
 struct exp_sin_jacobian {
     template <class T>
     void operator()(T, const state3<T>& y, odestep::jacobian_t<state3<T>>& j) const noexcept {
@@ -113,22 +105,6 @@ struct prothero_robinson_jacobian {
     T lambda;
     void operator()(T, const state1<T>&, odestep::jacobian_t<state1<T>>& j) const noexcept { j[0][0] = lambda; }
 };
-
-// Least-squares slope of log(error) against log(h) for errors at h, h/2, h/4, ...
-template <std::size_t K>
-double fitted_slope(const std::array<double, K>& errors) {
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (std::size_t i = 0; i < K; ++i) {
-        const double x = -std::log(2.0) * static_cast<double>(i);
-        const double yv = std::log(errors[i]);
-        sx += x;
-        sy += yv;
-        sxx += x * x;
-        sxy += x * yv;
-    }
-    const double n = static_cast<double>(K);
-    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
 
 }  // namespace odestep_test
 
