@@ -621,7 +621,7 @@ TEST_CASE("events: the default root finder locates smooth events in at most 10 r
     const auto r =
         odestep::integrate(odestep::rk4<state2>{}, free_fall{&calls}, s, 0.0, 10.0, 0.1, odestep::watch(ground));
     REQUIRE(r.status == odestep::status::stopped_by_event);
-    const std::size_t location = calls - 4 * (r.steps + 1);  // beyond the steps themselves
+    const std::size_t location = calls - 4 * static_cast<std::size_t>(r.steps + 1);  // beyond the steps themselves
     CHECK(location % 4 == 0);
     CHECK(location / 4 <= 10);
 }

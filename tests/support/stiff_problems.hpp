@@ -56,7 +56,7 @@ odestep::integrate_result<T> robertson_schedule(const Stepper& stepper, System&&
     for (;;) {
         if (end > t_end) end = t_end;
         r = odestep::integrate(stepper, f, y, t, end, (end - t) / static_cast<T>(per_phase));
-        total += r.steps;
+        total += static_cast<std::size_t>(r.steps);
         if (r.status != odestep::status::ok || end == t_end) break;
         t = end;
         end = end * T(10);
