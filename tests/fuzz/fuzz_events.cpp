@@ -280,6 +280,7 @@ void run_ticks(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_counte
         if (r.status == odestep::status::ok) {
             ODESTEP_FUZZ_CHECK(!f.non_finite_since, "a tick whose right-hand side returned NaN or Inf was ok");
             ODESTEP_FUZZ_CHECK(loop.ticks() == n_before + 1 && r.t == grid_end, "an ok tick not on t0 + n dt");
+            ODESTEP_FUZZ_CHECK(std::isfinite(r.t), "an ok tick whose time is not finite");
             for (const auto& s : y) ODESTEP_FUZZ_CHECK(finite(s), "an ok tick left a state that is not finite");
         } else if (r.t == t_before && g.actions == actions_before) {  // no action ran: nothing changed
             ODESTEP_FUZZ_CHECK(unchanged(before), "a failed tick whose state is not the one before it");
