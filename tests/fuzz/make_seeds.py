@@ -155,9 +155,10 @@ def g(kind, k, c):
     return b(kind, k) + num(c) + b(1)  # no poison
 
 
-def events(stepper, tail, y=((1, 0),), shape=2, action=b(1, 1) + num(0.5), f=None):
+def events(stepper, tail, y=((1, 0),), shape=2, action=b(1, 1) + num(0.5), f=None, gs=None):
     out = b(EVENTS.index(stepper)) + (f if f is not None else script(a=((0, 1), (-1, 0))))
-    out += g(0, 0, 0) + g(0, 1, 0) + g(1, 0, 1e9)  # y0 = 0 (a bounce), y1 = 0 (recorded), t = 1e9 (terminal)
+    # y0 = 0 (a bounce), y1 = 0 (recorded), t = 1e9 (terminal)
+    out += gs if gs is not None else g(0, 0, 0) + g(0, 1, 0) + g(1, 0, 1e9)
     out += action
     for direction in (1, 2, 2):
         out += b(direction) + b(1)  # falling / either; default settings
@@ -235,7 +236,8 @@ def main():
           newtonian_loop("velocity_verlet", "max", "-max", n=3))
     # 5: the per-tick clock past the largest time (guarded in fuzz_events.cpp until the events rework lands).
     write("fuzz_events", "regression-5-tick-clock-overflow", events("rk4", events_ticks("max/2", "max/4", 8),
-                                                                         f=script(a=((0, 0), (0, 0)))))
+                                                                         f=script(mode=2, a=((0, 0), (0, 0))),
+                                                                         gs=g(0, 0, -1) + g(0, 1, -1) + g(0, 0, -2)))
     # 6: an Adams starting step at t = NaN.
     write("fuzz_steps", "regression-6-adams-nan-t",
           steps_adams("ab4", script(mode=1, bvec=(1, 1)), [("nan", 0.1, 1)]))
