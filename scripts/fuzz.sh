@@ -17,12 +17,12 @@
 # widen coverage go to build/fuzz/corpus/<target>/, never into the committed corpus.
 #
 # Environment: CXX_FUZZ (default clang++), FUZZ_BUILD_DIR (default build/fuzz), FUZZ_TIMEOUT (seconds one input may
-# take before it is a hang, default 10). Needs clang++ and its libFuzzer runtime (Debian: clang, libclang-rt-dev).
+# take before it is a hang, default 10), FUZZ_TARGETS (a space-separated subset of the targets). Needs clang++ and its libFuzzer runtime (Debian: clang, libclang-rt-dev).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
 
-targets=(fuzz_loops fuzz_loops_newtonian fuzz_steps fuzz_events)
+read -r -a targets <<< "${FUZZ_TARGETS:-fuzz_loops fuzz_loops_newtonian fuzz_steps fuzz_events}"
 quick_seconds=15
 cxx=${CXX_FUZZ:-clang++}
 dir=${FUZZ_BUILD_DIR:-$root/build/fuzz}

@@ -137,6 +137,7 @@ struct velocity_force {
     }
 };
 
+// Stepper: newtonian_under_test<S>, derived from the stepper S.
 template <class Stepper, class Force>
 void newtonian_with(reader& in, script<double, 2>& f, Stepper& stepper, Force force) {
     using T = double;
@@ -154,7 +155,7 @@ void newtonian_with(reader& in, script<double, 2>& f, Stepper& stepper, Force fo
             stepper.reset_if_any();
             continue;
         }
-        if constexpr (std::is_same_v<Stepper, odestep::newtonian_euler_richardson<v2>>) {
+        if constexpr (std::is_base_of_v<odestep::newtonian_euler_richardson<v2>, Stepper>) {
             if (form == 1) {
                 (void)checked_call(
                     f, Stepper::rhs_evals_per_error_step, [&] { return stepper.step(force, x, v, c.t, c.dt, ex, ev); },
@@ -162,7 +163,7 @@ void newtonian_with(reader& in, script<double, 2>& f, Stepper& stepper, Force fo
                 continue;
             }
         }
-        if constexpr (std::is_same_v<Stepper, odestep::beeman<v2>>) {
+        if constexpr (std::is_base_of_v<odestep::beeman<v2>, Stepper>) {
             if (form == 1) {
                 v2 a0 = hist.acc;
                 v2 a1 = hist.acc_prev;

@@ -240,7 +240,7 @@ def main():
                                                                          gs=g(0, 0, -1) + g(0, 1, -1) + g(0, 0, -2)))
     # 6: an Adams starting step at t = NaN.
     write("fuzz_steps", "regression-6-adams-nan-t",
-          steps_adams("ab4", script(mode=1, bvec=(1, 1)), [("nan", 0.1, 1)]))
+          steps_adams("ab4", script(mode=2, bvec=(1, 1)), [("nan", 0.1, 1)]))  # f reads neither t nor y
     # 7: an Adams run on a finite grid near the largest double.
     still = script(a=((0, 0), (0, 0)))  # y' = 0: the state stays finite whatever dt
     write("fuzz_loops", "regression-7-adams-near-max", loops("ab4", 0.8 * 1.7976931348623157e308,
