@@ -211,6 +211,139 @@ TEST_CASE("integrate_n_steps: bad t0 and dt return their status before anything 
     CHECK(y[0] == 0.5);
 }
 
+TEST_CASE(
+    "integrate: dt against t1 is wrong_direction even when (t1 - t0) / dt underflows to -0, nothing observed or "
+    "touched") {
+    // -1e-300 / 1e300 underflows to -0, which is not < 0: the run once went one "last step" of t1 - t0 against
+    // dt's sign, with status ok.
+    struct bad_case {
+        double t0, t1, dt;
+    };
+    for (const bad_case c : {bad_case{0.0, -1e-300, 1e300}, bad_case{0.0, 1e-300, -1e300}}) {
+        INFO("t1 ", c.t1, ", dt ", c.dt);
+        std::size_t calls = 0;
+        auto f = [&calls](double, const state1& y) {
+            ++calls;
+            return y;
+        };
+        state1 y{0.5};
+        recorder seen;
+        const auto r = odestep::integrate(odestep::rk4<state1>{}, f, y, c.t0, c.t1, c.dt, seen);
+        CHECK(r.status == odestep::status::wrong_direction);
+        CHECK(r.steps == 0);
+        CHECK(seen.calls == 0);
+        CHECK(calls == 0);
+        CHECK(y[0] == 0.5);
+        // Newton's equations take the same loop.
+        state1 x{0.25};
+        state1 v{0.75};
+        const auto rn = odestep::integrate(
+            odestep::velocity_verlet<state1>{}, [](double, const state1& p) { return p; }, x, v, c.t0, c.t1, c.dt,
+            [&seen](double, const state1&, const state1&) { ++seen.calls; });
+        CHECK(rn.status == odestep::status::wrong_direction);
+        CHECK(seen.calls == 0);
+        CHECK(x[0] == 0.25);
+        CHECK(v[0] == 0.75);
+    }
+}
+
+TEST_CASE("integrate_n_steps: a run whose last time t0 + n dt overflows is invalid_time, nothing observed or touched") {
+    // t0 + n dt past the largest double once ran on with status ok, r.t = -Inf, and f and the observer called
+    // at t = -Inf; integrate refuses the same run with invalid_time.
+    const double big = std::numeric_limits<double>::max();
+    struct bad_case {
+        double t0, dt;
+        odestep::step_count n;
+    };
+    for (const bad_case c : {bad_case{big, -big, 3}, bad_case{0.0, big, 2}, bad_case{-big, -1e300, 1}}) {
+        INFO("t0 ", c.t0, ", dt ", c.dt, ", n ", c.n);
+        std::size_t calls = 0;
+        auto f = [&calls](double, const state1& y) {
+            ++calls;
+            return y;
+        };
+        state1 y{0.5};
+        recorder seen;
+        const auto r = odestep::integrate_n_steps(odestep::rk4<state1>{}, f, y, c.t0, c.dt, c.n, seen);
+        CHECK(r.status == odestep::status::invalid_time);
+        CHECK(r.steps == 0);
+        CHECK(seen.calls == 0);
+        CHECK(calls == 0);
+        CHECK(y[0] == 0.5);
+        state1 x{0.25};
+        state1 v{0.75};
+        const auto rn = odestep::integrate_n_steps(
+            odestep::velocity_verlet<state1>{}, [](double, const state1& p) { return p; }, x, v, c.t0, c.dt, c.n,
+            [&seen](double, const state1&, const state1&) { ++seen.calls; });
+        CHECK(rn.status == odestep::status::invalid_time);
+        CHECK(seen.calls == 0);
+        CHECK(x[0] == 0.25);
+        CHECK(v[0] == 0.75);
+    }
+}
+
+TEST_CASE("integrate: a run near the largest double stops at t1, with every time finite and on the grid") {
+    // From 0.5 max to 0.8 max in steps of 0.1 max: 3 steps. The grid's rounding allowance, written
+    // 2 eps (|t0| + |t1|), overflowed to Inf there, and the plan counted grid times past t1: f and the observer
+    // were called at t = Inf, and the observer saw 7 steps, the times going up to Inf and back to t1.
+    const double big = std::numeric_limits<double>::max();
+    const double t0 = 0.5 * big;
+    const double t1 = 0.8 * big;
+    const double dt = 0.1 * big;
+    bool f_finite_times = true;
+    auto f = [&f_finite_times](double t, const state1&) {
+        f_finite_times = f_finite_times && std::isfinite(t);
+        return state1{0.0};
+    };
+    state1 y{0.5};
+    recorder seen;
+    const auto r = odestep::integrate(odestep::rk4<state1>{}, f, y, t0, t1, dt, seen);
+    CHECK(r.status == odestep::status::ok);
+    CHECK(r.steps == 3);
+    CHECK(r.t == t1);
+    CHECK(f_finite_times);
+    REQUIRE(seen.calls == 4);
+    for (std::size_t i = 0; i < 3; ++i) CHECK(seen.t[i] == t0 + static_cast<double>(i) * dt);  // t0 + i dt
+    CHECK(seen.t[3] == t1);
+    CHECK(y[0] == 0.5);
+}
+
+TEST_CASE("integrate: with dt below the grid's rounding the observer times still rise to t1, never past it and back") {
+    // float, t0 = 0.99609375, dt = 1e-7 (1.7 ULPs there), t1 = t0 + 40 ULPs: the grid's rounding,
+    // 2 eps (|t0| + |t1|), is 4 ULPs, so grid times up to 4 ULPs past t1 "reach" it. The run once observed
+    // grid times past t1 and then t1 itself, going back (fuzzing found it). Every time must be a grid time
+    // t0 + i dt, the last one t1, in order along dt; no step longer than dt plus the grid's rounding.
+    using statef = std::array<float, 1>;
+    const float t0 = 0.99609375f;
+    const float t1 = 0.99609613418579102f;
+    const float dt = 1e-7f;
+    struct times {
+        std::array<float, 64> t{};
+        std::size_t n = 0;
+        void operator()(float time, const statef&) {
+            if (n < t.size()) t[n] = time;
+            ++n;
+        }
+    };
+    times seen;
+    statef y{1.0f};
+    const auto r = odestep::integrate(
+        odestep::euler<statef>{}, [](float, const statef&) { return statef{0.0f}; }, y, t0, t1, dt, std::ref(seen));
+    REQUIRE(r.status == odestep::status::ok);
+    CHECK(r.t == t1);
+    REQUIRE(seen.n == r.steps + 1);
+    REQUIRE(seen.n <= seen.t.size());
+    const float rounding = 2.0f * std::numeric_limits<float>::epsilon() * (t0 + t1);
+    for (std::size_t i = 0; i + 1 < seen.n; ++i) {
+        INFO("observation ", i);
+        CHECK(seen.t[i] == t0 + static_cast<float>(i) * dt);  // on the grid
+        CHECK(seen.t[i] < t1);                                // before t1: the last step goes forward
+        if (i > 0) CHECK(seen.t[i] >= seen.t[i - 1]);
+        CHECK(seen.t[i + 1] - seen.t[i] <= dt + rounding);
+    }
+    CHECK(seen.t[seen.n - 1] == t1);
+}
+
 TEST_CASE("integrate: a NaN or Inf from the right-hand side rolls the step back to the last good state") {
     for (const double poison : {qnan, inf, -inf}) {
         INFO("poison ", poison);

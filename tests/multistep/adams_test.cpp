@@ -337,13 +337,17 @@ TEST_CASE("adams: a different dt or a wrong t returns step_mismatch, evaluates n
                                          std::nextafter(dt, 1.0),
                                          std::nextafter(dt, 0.0),
                                          std::numeric_limits<double>::quiet_NaN()};
-                const double bad_t[] = {t + dt, t - dt, t + 1e-9, std::numeric_limits<double>::quiet_NaN(),
-                                        std::numeric_limits<double>::infinity()};
+                const double bad_t[] = {t + dt, t - dt, t + 1e-9};
+                const double non_finite_t[] = {std::numeric_limits<double>::quiet_NaN(),
+                                               std::numeric_limits<double>::infinity(),
+                                               -std::numeric_limits<double>::infinity()};
                 std::size_t calls = 0;
                 for (double d : bad_dt)
                     CHECK(stepper.step(counting_exp_sin{&calls}, y, t, d) == odestep::status::step_mismatch);
                 for (double s : bad_t)
                     CHECK(stepper.step(counting_exp_sin{&calls}, y, s, dt) == odestep::status::step_mismatch);
+                for (double s : non_finite_t)  // on no grid at all
+                    CHECK(stepper.step(counting_exp_sin{&calls}, y, s, dt) == odestep::status::invalid_time);
                 CHECK(stepper.step(counting_exp_sin{&calls}, y, t + dt, 2 * dt) == odestep::status::step_mismatch);
                 CHECK(calls == 0);
                 CHECK(same_bits(y, before));
@@ -367,9 +371,71 @@ TEST_CASE("adams: after a step whose end time overflows to Inf, no time continue
         REQUIRE(stepper.step(still, y, big, big / 2) == odestep::status::ok);
         REQUIRE(same_bits(y, y_start));
         INFO(doctest::String(decltype(method)::name));
-        for (double t : {0.0, 1.0, -big, big, std::numeric_limits<double>::infinity()})
+        for (double t : {0.0, 1.0, -big, big})
             CHECK(stepper.step(still, y, t, big / 2) == odestep::status::step_mismatch);
+        CHECK(stepper.step(still, y, std::numeric_limits<double>::infinity(), big / 2) ==
+              odestep::status::invalid_time);
         CHECK(same_bits(y, y_start));
+    });
+}
+
+TEST_CASE(
+    "adams: a NaN or infinite t is invalid_time on the first step too, within rhs_evals_per_step evaluations (none), "
+    "nothing touched") {
+    // The starting step recorded f(t, y) by comparing the stage time with t; with t NaN that never matched
+    // (NaN == NaN is false), so the step evaluated f once more than rhs_evals_per_step, and returned ok for an
+    // f that ignores t. Non-finite t is on no grid: invalid_time, before any evaluation.
+    for_each_type<adams_methods>([](auto method) {
+        using stepper_t = odestep::adams<decltype(method), state>;
+        INFO(doctest::String(decltype(method)::name));
+        for (const double t : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                               -std::numeric_limits<double>::infinity()}) {
+            stepper_t stepper;
+            state y = y_start;
+            std::size_t calls = 0;
+            CHECK(stepper.step(counting_exp_sin{&calls}, y, t, 0.1) == odestep::status::invalid_time);
+            CHECK(calls == 0);
+            CHECK(calls <= stepper_t::rhs_evals_per_step);
+            CHECK(same_bits(y, y_start));
+            CHECK(stepper.history_size() == 0);
+            // ... and the stepper starts afresh at a finite t, as if the call had not been made.
+            CHECK(stepper.step(counting_exp_sin{&calls}, y, 0.0, 0.1) == odestep::status::ok);
+            CHECK(stepper.history_size() == 1);
+        }
+    });
+}
+
+TEST_CASE("adams: a run on a finite grid near the largest double is not refused by its own history check") {
+    // From t0 = 0.8 max in steps of 0.019 max (exact times up to 0.99 max, all finite): |t| + |t_first| passes
+    // the largest double from the second step on, and the history check's allowance, written
+    // 8 eps (|t| + |dt| + |t_first|), overflowed to Inf and was taken as "accepts nothing": the run stopped
+    // with step_mismatch after 2 steps wherever the counter's time differed from the stepper's t + dt in the
+    // last bit. y' = 0 keeps y finite; the expected result is every step done and y as it was.
+    const double big = std::numeric_limits<double>::max();
+    auto still = [](double, const state&, state& dydt) { dydt = state{}; };
+    for_each_type<adams_methods>([&](auto method) {
+        using stepper_t = odestep::adams<decltype(method), state>;
+        INFO(doctest::String(decltype(method)::name));
+        for (const odestep::step_count n : {10U, 20U, 100U}) {
+            const double t0 = 0.8 * big;
+            const double dt = 0.19 * big / static_cast<double>(n);
+            state y = y_start;
+            std::size_t observed = 0;
+            double last = 0.0;
+            bool monotone = true;
+            auto observe = [&](double t, const state&) {
+                monotone = monotone && (observed == 0 || t > last) && std::isfinite(t);
+                last = t;
+                ++observed;
+            };
+            INFO("n = ", n);
+            const auto r = odestep::integrate_n_steps(stepper_t{}, still, y, t0, dt, n, observe);
+            CHECK(r.status == odestep::status::ok);
+            CHECK(r.steps == n);
+            CHECK(observed == n + 1);
+            CHECK(monotone);
+            CHECK(same_bits(y, y_start));
+        }
     });
 }
 

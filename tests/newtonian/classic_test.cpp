@@ -135,6 +135,30 @@ TEST_CASE("newtonian_euler_richardson: the error estimate is the difference to t
     }
 }
 
+TEST_CASE(
+    "newtonian_euler_richardson: an estimate ex = a0 dt^2 / 2 that overflows is non_finite, even where x1 and v1 are "
+    "finite") {
+    // a = 2.5e307 (constant), x = 0, v = -5e307, dt = 4: v_mid = v + a dt/2 = 0, so x1 = x + v_mid dt = 0 and
+    // v1 = v + a dt = 5e307 are finite, and ev = (a_mid - a0) dt = 0; but ex = a0 dt^2 / 2 = 2e308 overflows
+    // (the largest double is 1.8e308).
+    using state1 = std::array<double, 1>;
+    auto a = [](double, const state1&) { return state1{2.5e307}; };
+    const odestep::newtonian_euler_richardson<state1> stepper;
+    for (int form = 0; form < 2; ++form) {
+        INFO((form == 0 ? "the estimating step" : "the plain step"));
+        state1 x{0.0};
+        state1 v{-5e307};
+        state1 ex{7.0};
+        state1 ev{8.0};
+        const odestep::status s = form == 0 ? stepper.step(a, x, v, 0.0, 4.0, ex, ev) : stepper.step(a, x, v, 0.0, 4.0);
+        CHECK(s == odestep::status::non_finite);
+        CHECK(x[0] == 0.0);
+        CHECK(v[0] == -5e307);
+        CHECK(ex[0] == 7.0);
+        CHECK(ev[0] == 8.0);
+    }
+}
+
 TEST_CASE("newtonian: history-keeping methods make one evaluation per step once started, and restart when asked") {
     auto check = [](auto stepper, const char* name) {
         INFO(name);
@@ -241,6 +265,38 @@ TEST_CASE("predictor_corrector: a zero, negative or NaN tolerance is invalid_tol
         CHECK(x[0] == 1.0);
         CHECK(v[1] == 1.0);
     }
+}
+
+TEST_CASE(
+    "predictor_corrector: integrate and integrate_n_steps refuse a bad tolerance before observing or evaluating "
+    "anything") {
+    // The tolerance was checked only by step, so the loops observed the initial state and then returned
+    // invalid_tolerance: a rejected setting must leave nothing observed, as a rejected argument does.
+    for (const double tol :
+         {0.0, -1e-12, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+        odestep::predictor_corrector<vec2<double>> pc;
+        pc.tolerance = tol;
+        CHECK(pc.settings_status() == odestep::status::invalid_tolerance);
+        for (int loop = 0; loop < 2; ++loop) {
+            INFO("tolerance ", tol, (loop == 0 ? ", integrate" : ", integrate_n_steps"));
+            vec2<double> x{1.0, 0.0};
+            vec2<double> v{0.0, 1.0};
+            std::size_t calls = 0;
+            std::size_t observed = 0;
+            auto observe = [&observed](double, const vec2<double>&, const vec2<double>&) { ++observed; };
+            const auto r =
+                loop == 0
+                    ? odestep::integrate(pc, counting_oscillator{{}, &calls}, x, v, 0.0, 1.0, 0.01, observe)
+                    : odestep::integrate_n_steps(pc, counting_oscillator{{}, &calls}, x, v, 0.0, 0.01, 10, observe);
+            CHECK(r.status == odestep::status::invalid_tolerance);
+            CHECK(r.steps == 0);
+            CHECK(observed == 0);
+            CHECK(calls == 0);
+            CHECK(x[0] == 1.0);
+            CHECK(v[1] == 1.0);
+        }
+    }
+    CHECK(odestep::predictor_corrector<vec2<double>>{}.settings_status() == odestep::status::ok);
 }
 
 TEST_CASE("newtonian: a NaN or Inf from the force rolls every method back, bit for bit") {

@@ -203,6 +203,60 @@ TEST_CASE("explicit_rk: a NaN or Inf from any stage leaves y (and the estimate) 
     });
 }
 
+TEST_CASE(
+    "explicit_rk: a NaN or Inf from a stage that does not reach the new state (a zero weight, an f that ignores y) "
+    "is non_finite, not an ok step") {
+    // f(t, y) = (1, 1) ignores y (a forcing f(t), a switch, a saturation), so a non-finite stage value does not
+    // propagate through the later stage inputs; in a stage whose weight b_i is zero (the midpoint rule's b_1,
+    // Dormand-Prince's b_2, ...) it reaches neither the new state nor the estimate. Every stage value must be
+    // finite for an ok step: each evaluation of each step form is poisoned in turn.
+    constexpr double poisons[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                                  -std::numeric_limits<double>::infinity()};
+    odestep_test::for_each_method([&](auto method) {
+        using M = decltype(method);
+        using stepper = odestep::explicit_rk<M, state2>;
+        for (const double poison : poisons) {
+            for (std::size_t poisoned = 1; poisoned <= stepper::rhs_evals_per_step; ++poisoned) {
+                std::size_t calls = 0;
+                auto f = [&calls, poisoned, poison](double, const state2&) {
+                    ++calls;
+                    return calls == poisoned ? state2{poison, poison} : state2{1.0, 1.0};
+                };
+                state2 y{0.25, 0.5};
+                const state2 before = y;
+                INFO(doctest::String(M::name), ", evaluation ", poisoned, ", poison ", poison);
+                CHECK(stepper{}.step(f, y, 0.0, 0.1) == odestep::status::non_finite);
+                CHECK(same_bits(y, before));
+            }
+            if constexpr (stepper::error_estimate) {
+                for (std::size_t poisoned = 1; poisoned <= stepper::rhs_evals_per_error_step; ++poisoned) {
+                    std::size_t calls = 0;
+                    auto f = [&calls, poisoned, poison](double, const state2&) {
+                        ++calls;
+                        return calls == poisoned ? state2{poison, poison} : state2{1.0, 1.0};
+                    };
+                    state2 y{0.25, 0.5};
+                    state2 err{7.0, 8.0};
+                    const state2 before = y;
+                    INFO(doctest::String(M::name), ", estimating step, evaluation ", poisoned, ", poison ", poison);
+                    CHECK(stepper{}.step(f, y, 0.0, 0.1, err) == odestep::status::non_finite);
+                    CHECK(same_bits(y, before));
+                    CHECK(err[0] == 7.0);
+                    CHECK(err[1] == 8.0);
+                    if constexpr (stepper::error_estimates >= 2) {
+                        calls = 0;
+                        state2 err2{9.0, 10.0};
+                        CHECK(stepper{}.step(f, y, 0.0, 0.1, err, err2) == odestep::status::non_finite);
+                        CHECK(same_bits(y, before));
+                        CHECK(err[0] == 7.0);
+                        CHECK(err2[1] == 10.0);
+                    }
+                }
+            }
+        }
+    });
+}
+
 TEST_CASE("explicit_rk: a step of the oscillator agrees with its closed-form amplification") {
     // For y' = A y with A the rotation generator, one RK4 step is the Taylor polynomial of exp(hA) to
     // degree 4: x1 = (1 - h^2/2 + h^4/24) x0 + (h - h^3/6) v0.

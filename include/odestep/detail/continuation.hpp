@@ -18,7 +18,9 @@ namespace odestep::detail {
 // time is exactly the t + dt the stepper computed (t += dt, or the counter's time when it rounds the same
 // way), is one comparison: expect() stores t only when it is finite (NaN otherwise, which equals nothing),
 // so t_now == t proves t_now finite, and |t_now - t| = 0 is within any allowance. Only the other times
-// compute the allowance; one that is not finite (the sum overflowing) is taken as NaN, which accepts
+// compute the allowance, as 8 eps |t| + 8 eps |dt| + 8 eps |t_start|: each term is at most 8 eps times the
+// largest finite value, so the sum is finite whenever t is (written as one product of the sum, it overflowed
+// near the top of the range, on a finite grid, and accepted nothing). A NaN t makes it NaN, which accepts
 // nothing, and with a finite allowance and a finite t a non-finite t_now fails the comparison by itself.
 template <class State, class T = value_type_t<State>>
 struct continuation {
@@ -55,10 +57,11 @@ struct continuation {
     constexpr void clear() noexcept { x = nullptr; }
 
 private:
-    // t_now within the allowance of t (which is finite or NaN).
+    // t_now within the allowance of t (which is finite or NaN; dt and t_start are finite).
     constexpr bool near(T t_now) const noexcept {
-        const T s = T(8) * std::numeric_limits<T>::epsilon() * (abs_value(t) + abs_value(dt) + abs_value(t_start));
-        return abs_value(t_now - t) <= s - s + s;  // s when finite; Inf - Inf is NaN
+        constexpr T c = T(8) * std::numeric_limits<T>::epsilon();
+        const T s = c * abs_value(t) + c * abs_value(dt) + c * abs_value(t_start);  // no overflow: see above
+        return abs_value(t_now - t) <= s;
     }
 };
 

@@ -60,10 +60,14 @@ struct grid_clock {
 
 /// How far the computed grid times may be from the exact t0 + n dt near [t0, t1]: each is rounded in the
 /// product n dt and in the sum, about one ULP of the larger of |t0| and |t1| in all, so 2 eps (|t0| + |t1|)
-/// covers them. Two times of the run closer than this are the same time to the grid.
+/// covers them. Two times of the run closer than this are the same time to the grid. Computed as
+/// 2 eps |t0| + 2 eps |t1|, each term finite, so that it is finite for every finite t0 and t1 (as
+/// 2 eps (|t0| + |t1|) it overflowed to Inf near the top of the range, and the plan then counted grid
+/// times past t1, out to Inf).
 template <class T>
 constexpr T grid_rounding(T t0, T t1) noexcept {
-    return T(2) * std::numeric_limits<T>::epsilon() * (abs_value(t0) + abs_value(t1));
+    constexpr T c = T(2) * std::numeric_limits<T>::epsilon();
+    return c * abs_value(t0) + c * abs_value(t1);
 }
 
 /// A fixed-step run: its clock, how many steps, and the last step, which ends exactly on t_end.
@@ -116,7 +120,22 @@ constexpr status plan_run(T t0, T t1, T dt, grid_plan<T>& plan) noexcept {
     for (int k = 0; k < 4 && !(beyond(n + 1) > rounding); ++k) ++n;
     // t_n reaches t1 to the grid's rounding: n steps, the last one dt; otherwise one more, shortened.
     const bool reaches = n > 0 && !(-beyond(n) > rounding);
-    plan.steps = reaches ? n : n + 1;
+    step_count steps = reaches ? n : n + 1;
+    // Where dt is below the grid's rounding (a few ULPs of t), grid times before t_n can lie on or past t1
+    // too, and the last step would go back to t1 (or stay there). The last step then starts at the last grid
+    // time before t1: t_m with beyond(m) < 0 (t_0 is one), found by bisection (the grid times are monotone
+    // in m), so that the times of the run are monotone and the last step, t1 - t_m, is no longer than dt.
+    // Where the grid resolves dt, t_{steps-1} is before t1 by about dt and this costs one comparison.
+    if (!(beyond(steps - 1) < T(0))) {
+        step_count lo = 0;          // beyond(lo) < 0
+        step_count hi = steps - 1;  // beyond(hi) >= 0
+        while (hi - lo > 1) {
+            const step_count mid = lo + (hi - lo) / 2;
+            (beyond(mid) < T(0) ? lo : hi) = mid;
+        }
+        steps = lo + 1;
+    }
+    plan.steps = steps;
     plan.t_end = t1;
     const T h = t1 - clock.time(plan.steps - 1);
     plan.h_last = abs_value(h - dt) <= rounding ? dt : h;

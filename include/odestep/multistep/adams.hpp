@@ -38,7 +38,9 @@ struct is_explicit_rk<explicit_rk<Method, State>> : std::true_type {};
 /// f(t_n, y_n); no extra evaluation). Those k-1 steps are exactly the starter's; the formula takes over at
 /// step k. The starter's order p should be at least k - 1 for the method to keep its order.
 ///
-/// History checks. The first step after construction or `reset()` accepts any t and dt. After that, a step
+/// History checks. A NaN or infinite t returns `status::invalid_time` and touches nothing, on any step (it is
+/// on no grid, and no history can start there). The first step after construction or `reset()` accepts any
+/// finite t and any dt. After that, a step
 /// whose dt differs from the history's (exact comparison) or whose t is not the end of the previous step
 /// returns `status::step_mismatch` and touches nothing: neither y nor the history. "The end of the previous
 /// step" is t_prev + dt to within 8 eps (|t_prev + dt| + |dt| + |t_first|), t_first being the time of the
@@ -97,8 +99,10 @@ public:
     template <class System>
     [[nodiscard]] status step(System&& f, State& y, T t, T dt) {
         // The history's grid (detail::continuation): the same dt, and t the last step's t + dt to within the
-        // rounding of a counter's t0 + i dt; a NaN or infinite t is a mismatch.
-        if (count_ > 0 && !next_.on_grid(t, dt)) return status::step_mismatch;
+        // rounding of a counter's t0 + i dt. A NaN or infinite t is on no grid: invalid_time, tested only
+        // where the grid check failed (it passes only finite times) and in the starting step.
+        if (count_ > 0 && !next_.on_grid(t, dt))
+            return detail::is_finite(t) ? status::step_mismatch : status::invalid_time;
         if (count_ < M) return starter_step(f, y, t, dt);
         State fn;
         detail::evaluate(f, t, y, fn);
@@ -214,6 +218,9 @@ private:
     // be every step's (x86-64 -Os, Lorenz AB4: 14 instructions a step for the registers saved and restored).
     template <class System>
     ODESTEP_NOINLINE status starter_step(System& f, State& y, T t, T dt) {
+        // A non-finite t starts no grid. (It would also miss the recorder, NaN == NaN being false, and cost
+        // the evaluation below on top of the starter's: one more than rhs_evals_per_step.)
+        if (!detail::is_finite(t)) return status::invalid_time;
         State next = y;
         State fn{};  // written by the recorder; zeroed so that g++ -O1 sees it initialised
         recording_system<System> recorder{f, t, static_cast<const State&>(y), fn, false};

@@ -126,6 +126,23 @@ private:
     static constexpr std::array<bool, S> plain_stages = needed_stages(false);
     static constexpr std::array<bool, S> error_stages = needed_stages(true);
 
+    // The stages a step evaluates whose value reaches none of the results it tests for finiteness: a zero
+    // weight b_i (the midpoint rule's b_1, Dormand-Prince's b_2), and for the estimating steps a zero
+    // b_i - bhat_i in each estimate the step returns. Such a stage is read only through later stage inputs,
+    // where a NaN need not survive (an f that ignores its input: a forcing f(t), a switch, a saturation), so
+    // its value is added to the finiteness test itself. A stage with a non-zero weight needs nothing more:
+    // w NaN and w Inf are not finite, and neither is a sum with such a term.
+    static constexpr std::array<bool, S> unchecked_stages(bool with_error, std::size_t estimates) noexcept {
+        const std::array<bool, S> evaluated = needed_stages(with_error);
+        std::array<bool, S> unchecked{};
+        for (std::size_t i = 0; i < S; ++i) {
+            bool reached = tab.b[i] != T(0);
+            for (std::size_t e = 0; e < estimates && e < E; ++e) reached = reached || tab.b[i] != tab.bhat[e][i];
+            unchecked[i] = evaluated[i] && !reached;
+        }
+        return unchecked;
+    }
+
 public:
     static constexpr int order = tab.order;
     static constexpr std::size_t stages = S;
@@ -143,14 +160,22 @@ public:
         std::array<State, S> k;  // not zeroed: every stage the step reads is written first
         State next;
         run_stages<false>(f, y, t, dt, k, next, std::make_index_sequence<S>{});
+        constexpr std::size_t estimates = 0;
         T total = -T(0);  // x + (-0) is x, exactly: the compiler drops that first addition
         ODESTEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
             if constexpr (!next_from_stage<false>) next[n] = y[n] + sum<b_weights>(k, n, dt);
-            if constexpr (fused_total) total += next[n];
+            if constexpr (fused_total) {
+                total += next[n];
+                add_stage_components<estimates>(total, k, n);
+            }
         }
-        if constexpr (!fused_total) add_all(total, next);
-        if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) && !detail::each_finite(next)) return status::non_finite;
+        if constexpr (!fused_total) {
+            add_all(total, next);
+            add_stages<estimates>(total, k);
+        }
+        if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) && !(detail::each_finite(next) && stages_finite<estimates>(k)))
+            return status::non_finite;
         detail::assign<detail::copy_form::block_at_size>(y, next);
         return status::ok;
     }
@@ -163,19 +188,25 @@ public:
         std::array<State, S> k;  // not zeroed: every stage the step reads is written first
         State next;
         run_stages<true>(f, y, t, dt, k, next, std::make_index_sequence<S>{});
+        constexpr std::size_t estimates = 1;
         State err;
         T total = -T(0);
         ODESTEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
             if constexpr (!next_from_stage<true>) next[n] = y[n] + sum<b_weights>(k, n, dt);
             err[n] = sum<error_weights<0>>(k, n, dt);
-            if constexpr (fused_total) total += next[n] + err[n];
+            if constexpr (fused_total) {
+                total += next[n] + err[n];
+                add_stage_components<estimates>(total, k, n);
+            }
         }
         if constexpr (!fused_total) {
             add_all(total, next);
             add_all(total, err);
+            add_stages<estimates>(total, k);
         }
-        if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) && !(detail::each_finite(next) && detail::each_finite(err)))
+        if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) &&
+            !(detail::each_finite(next) && detail::each_finite(err) && stages_finite<estimates>(k)))
             return status::non_finite;
         detail::assign<detail::copy_form::block_at_size>(y, next);
         detail::assign<detail::copy_form::block_at_size>(error, err);
@@ -189,6 +220,7 @@ public:
         std::array<State, S> k;  // not zeroed: every stage the step reads is written first
         State next;
         run_stages<true>(f, y, t, dt, k, next, std::make_index_sequence<S>{});
+        constexpr std::size_t estimates = 2;
         State err;
         State err2;
         T total = -T(0);
@@ -197,15 +229,19 @@ public:
             if constexpr (!next_from_stage<true>) next[n] = y[n] + sum<b_weights>(k, n, dt);
             err[n] = sum<error_weights<0>>(k, n, dt);
             err2[n] = sum<error_weights<1>>(k, n, dt);
-            if constexpr (fused_total) total += next[n] + err[n] + err2[n];
+            if constexpr (fused_total) {
+                total += next[n] + err[n] + err2[n];
+                add_stage_components<estimates>(total, k, n);
+            }
         }
         if constexpr (!fused_total) {
             add_all(total, next);
             add_all(total, err);
             add_all(total, err2);
+            add_stages<estimates>(total, k);
         }
-        if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) &&
-            !(detail::each_finite(next) && detail::each_finite(err) && detail::each_finite(err2)))
+        if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) && !(detail::each_finite(next) && detail::each_finite(err) &&
+                                                              detail::each_finite(err2) && stages_finite<estimates>(k)))
             return status::non_finite;
         detail::assign<detail::copy_form::block_at_size>(y, next);
         detail::assign<detail::copy_form::block_at_size>(error, err);
@@ -224,6 +260,35 @@ private:
         ODESTEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) total += v[n];
     }
+    // The unchecked stages' values (unchecked_stages) in the finiteness test of a step that returns
+    // Estimates estimates: their components added to the sum, component n (in the fused loop) or all of
+    // them, and the exact test of the slow path. Expanded at compile time: for a table whose weights are
+    // all non-zero the set is empty and nothing is emitted.
+    template <std::size_t Estimates>
+    static constexpr std::array<bool, S> unchecked = unchecked_stages(Estimates > 0, Estimates);
+    template <std::size_t Estimates>
+    ODESTEP_INLINE static void add_stage_components(T& total, const std::array<State, S>& k, std::size_t n) noexcept {
+        add_stage_components<Estimates>(total, k, n, std::make_index_sequence<S>{});
+    }
+    template <std::size_t Estimates, std::size_t... I>
+    ODESTEP_INLINE static void add_stage_components(T& total, const std::array<State, S>& k, std::size_t n,
+                                                    std::index_sequence<I...>) noexcept {
+        ((unchecked<Estimates>[I] ? void(total += k[I][n]) : void()), ...);
+    }
+    template <std::size_t Estimates>
+    ODESTEP_INLINE static void add_stages(T& total, const std::array<State, S>& k) noexcept {
+        ODESTEP_UNROLL
+        for (std::size_t n = 0; n < N; ++n) add_stage_components<Estimates>(total, k, n);
+    }
+    template <std::size_t Estimates>
+    ODESTEP_INLINE static bool stages_finite(const std::array<State, S>& k) noexcept {
+        return stages_finite<Estimates>(k, std::make_index_sequence<S>{});
+    }
+    template <std::size_t Estimates, std::size_t... I>
+    ODESTEP_INLINE static bool stages_finite(const std::array<State, S>& k, std::index_sequence<I...>) noexcept {
+        return ((!unchecked<Estimates>[I] || detail::each_finite(k[I])) && ...);
+    }
+
     // Weight rows as types, so that each weight is a constant expression inside `sum`.
     template <std::size_t I>
     struct a_row {

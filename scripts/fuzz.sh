@@ -1,0 +1,172 @@
+#!/usr/bin/env bash
+# Builds odestep's fuzz targets (tests/fuzz/*.cpp: clang's libFuzzer with AddressSanitizer and
+# UndefinedBehaviorSanitizer) in their own build directory, build/fuzz/, and runs them. Each target checks the
+# README's promises as properties and aborts on a broken one (docs/hardening.md lists them).
+#
+#   scripts/fuzz.sh --quick     the gate: every target for 15 s (about a minute in all, after the build) on the
+#                               committed corpus, tests/fuzz/corpus/<target>/, whose regression-* inputs are
+#                               the defects found so far; fails on any finding
+#   scripts/fuzz.sh SECONDS     all targets for SECONDS in all (split evenly, one after the other), going on past
+#                               a finding; prints the executions per target and where the findings are
+#   scripts/fuzz.sh --known     replays tests/fuzz/known/<target>/: findings not fixed yet (each is expected to
+#                               fail until its fix lands; then it moves to the corpus), with impure event
+#                               functions allowed (ODESTEP_FUZZ_IMPURE_EVENTS=1, see tests/fuzz/fuzz_events.cpp)
+#   scripts/fuzz.sh --build     builds only
+# Every mode ends with the line "fuzz: N passed, M failed". A finding is written to build/fuzz/findings/<target>/
+# (replay it: build/fuzz/<target> FILE; ODESTEP_FUZZ_TRACE=1 prints what the checks saw). New inputs that
+# widen coverage go to build/fuzz/corpus/<target>/, never into the committed corpus.
+#
+# Environment: CXX_FUZZ (default clang++), FUZZ_BUILD_DIR (default build/fuzz), FUZZ_TIMEOUT (seconds one input may
+# take before it is a hang, default 10), FUZZ_TARGETS (a space-separated subset of the targets). Needs clang++ and its libFuzzer runtime (Debian: clang, libclang-rt-dev).
+set -uo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+
+read -r -a targets <<< "${FUZZ_TARGETS:-fuzz_loops fuzz_loops_newtonian fuzz_steps fuzz_events}"
+quick_seconds=15
+cxx=${CXX_FUZZ:-clang++}
+dir=${FUZZ_BUILD_DIR:-$root/build/fuzz}
+timeout_s=${FUZZ_TIMEOUT:-10}
+
+mode=${1:-}
+case "$mode" in
+  --quick | --known | --build) ;;
+  '' | -h | --help)
+    sed -n '2,/^set -uo/p' "$0" | sed '$d; s/^# \{0,1\}//'
+    [ -n "$mode" ] && exit 0
+    exit 2
+    ;;
+  *)
+    if ! [[ "$mode" =~ ^[0-9]+$ ]] || [ "$mode" -lt 1 ]; then
+      echo "fuzz: unknown argument '$mode' (--quick, --known, --build or a number of seconds)" >&2
+      exit 2
+    fi
+    ;;
+esac
+
+summary() { echo "fuzz: $1 passed, $2 failed"; }
+
+# --- build -----------------------------------------------------------------------------------------------
+if ! command -v "$cxx" > /dev/null 2>&1; then
+  echo "fuzz: $cxx is missing (scripts/install-deps.sh test)" >&2
+  summary 0 1
+  exit 1
+fi
+mkdir -p "$dir"
+probe=$dir/probe.cpp
+printf 'extern "C" int LLVMFuzzerTestOneInput(const unsigned char*, unsigned long) { return 0; }\n' > "$probe"
+if ! "$cxx" -fsanitize=fuzzer "$probe" -o "$dir/probe" > "$dir/probe.log" 2>&1; then
+  echo "fuzz: $cxx cannot link a libFuzzer target (Debian: apt-get install libclang-rt-dev):" >&2
+  cat "$dir/probe.log" >&2
+  summary 0 1
+  exit 1
+fi
+flags=(-std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+  -Wall -Wextra -Werror -I"$root/include")
+built=0
+pids=()
+for t in "${targets[@]}"; do
+  # Rebuild when the target, the shared checks or any header is newer than the binary.
+  if [ -x "$dir/$t" ] && [ -z "$(find "$root/tests/fuzz/$t.cpp" "$root/tests/fuzz/fuzz_support.hpp" "$root/include" \
+    -newer "$dir/$t" -print -quit)" ]; then
+    continue
+  fi
+  ("$cxx" "${flags[@]}" "$root/tests/fuzz/$t.cpp" -o "$dir/$t.new" > "$dir/$t.build.log" 2>&1 &&
+    mv "$dir/$t.new" "$dir/$t") &
+  pids+=($!)
+  # two compilations at a time
+  if [ ${#pids[@]} -ge 2 ]; then
+    wait "${pids[0]}" || built=1
+    pids=("${pids[@]:1}")
+  fi
+done
+for p in "${pids[@]}"; do wait "$p" || built=1; done
+if [ $built -ne 0 ]; then
+  for t in "${targets[@]}"; do
+    [ -s "$dir/$t.build.log" ] && { echo "fuzz: building $t:" >&2; cat "$dir/$t.build.log" >&2; }
+  done
+  summary 0 1
+  exit 1
+fi
+[ "$mode" = --build ] && { echo "fuzz: built ${targets[*]} in $dir"; summary ${#targets[@]} 0; exit 0; }
+
+# --- run ---------------------------------------------------------------------------------------------------
+passed=0
+failed=0
+# fuzz_one TARGET SECONDS: one libFuzzer run on the working corpus and the committed one; returns libFuzzer's
+# status and appends its executions to $dir/<target>.runs.
+fuzz_one() {
+  local t=$1 seconds=$2 log=$dir/$1.log
+  mkdir -p "$dir/corpus/$t" "$dir/findings/$t"
+  "$dir/$t" -max_total_time="$seconds" -timeout="$timeout_s" -rss_limit_mb=2048 -print_final_stats=1 \
+    -artifact_prefix="$dir/findings/$t/" "$dir/corpus/$t" "$root/tests/fuzz/corpus/$t" > "$log" 2>&1
+  local status=$?
+  sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1 >> "$dir/$t.runs"
+  return $status
+}
+
+if [ "$mode" = --known ]; then
+  for t in "${targets[@]}"; do
+    for f in "$root"/tests/fuzz/known/"$t"/*; do
+      [ -f "$f" ] || continue
+      if ODESTEP_FUZZ_IMPURE_EVENTS=1 "$dir/$t" -timeout="$timeout_s" "$f" > "$dir/known.log" 2>&1; then
+        echo "fuzz: known finding $t/$(basename "$f") passes now: move it to tests/fuzz/corpus/$t/"
+        passed=$((passed + 1))
+      else
+        echo "fuzz: known finding $t/$(basename "$f") still fails:"
+        grep -E 'property violated|ERROR: libFuzzer|SUMMARY' "$dir/known.log" | head -n 2 | sed 's/^/  /'
+        failed=$((failed + 1))
+      fi
+    done
+  done
+  summary $passed $failed
+  [ $failed -eq 0 ]
+  exit $?
+fi
+
+if [ "$mode" = --quick ]; then
+  for t in "${targets[@]}"; do
+    : > "$dir/$t.runs"
+    if fuzz_one "$t" "$quick_seconds"; then
+      echo "fuzz: ok   $t: $(cat "$dir/$t.runs") executions in ${quick_seconds} s, no finding"
+      passed=$((passed + 1))
+    else
+      echo "fuzz: FAIL $t: a finding (see $dir/$t.log; inputs in $dir/findings/$t/):"
+      grep -E 'property violated|ERROR: (libFuzzer|AddressSanitizer|UndefinedBehaviorSanitizer)|runtime error|SUMMARY' \
+        "$dir/$t.log" | head -n 3 | sed 's/^/  /'
+      failed=$((failed + 1))
+    fi
+  done
+  summary $passed $failed
+  [ $failed -eq 0 ]
+  exit $?
+fi
+
+# A long run: SECONDS in all, split evenly; after a finding the target starts again with the time it has left.
+per=$((mode / ${#targets[@]}))
+[ $per -lt 1 ] && per=1
+for t in "${targets[@]}"; do
+  : > "$dir/$t.runs"
+  start=$SECONDS
+  findings=0
+  while :; do
+    left=$((per - (SECONDS - start)))
+    [ $left -ge 1 ] || break
+    if ! fuzz_one "$t" "$left"; then
+      findings=$((findings + 1))
+      grep -E 'property violated|ERROR: (libFuzzer|AddressSanitizer|UndefinedBehaviorSanitizer)|runtime error' \
+        "$dir/$t.log" | head -n 1 | sed "s/^/fuzz: $t finding: /"
+      cp "$dir/$t.log" "$dir/findings/$t/log-$findings.txt"
+    fi
+  done
+  runs=$(awk '{ n += $1 } END { print n + 0 }' "$dir/$t.runs")
+  if [ $findings -eq 0 ]; then
+    echo "fuzz: ok   $t: $runs executions in $((SECONDS - start)) s, no finding"
+    passed=$((passed + 1))
+  else
+    echo "fuzz: FAIL $t: $runs executions in $((SECONDS - start)) s, $findings findings in $dir/findings/$t/"
+    failed=$((failed + 1))
+  fi
+done
+summary $passed $failed
+[ $failed -eq 0 ]

@@ -1,0 +1,261 @@
+#!/usr/bin/env python3
+"""Writes the fuzz targets' seed corpus and the regression inputs of issue 20 (tests/fuzz/corpus/<target>/),
+in the input format of tests/fuzz/fuzz_support.hpp (reader): a byte for each choice, a kind byte and its
+payload for each number. Run it from anywhere; it rewrites only the files it names.
+
+Every defect the targets found, or that issue 20 lists, is a file named regression-*: each makes the target
+abort (a broken promise) on the code before its fix, and passes after it.
+"""
+import os
+import struct
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus")
+
+# reader::special's table, by name.
+SPECIAL = {"0": 0, "-0": 1, "1": 2, "-1": 3, "0.5": 4, "2": 5, "0.1": 6, "0.001": 7, "10": 8, "1000": 9,
+           "max": 10, "-max": 11, "min": 12, "denorm": 13, "eps": 14, "nan": 15, "inf": 16, "-inf": 17,
+           "max/2": 18, "max/4": 19, "sqrtmax": 20, "sqrtmin": 21, "-min": 22, "1+eps": 23, "1e-7": 24,
+           "1e7": 25, "0.25": 26, "3": 27, "-0.1": 28, "-1000": 29, "max/8": 30, "-sqrtmax": 31}
+
+
+def b(*values):
+    return bytes(v & 0xFF for v in values)
+
+
+def num(value):
+    """A number: a name from SPECIAL, or a float (its raw double bits)."""
+    if isinstance(value, str):
+        return b(0, SPECIAL[value])
+    return b(2) + struct.pack("<d", float(value))
+
+
+def numf(value):
+    """A float number (raw float bits), for the float steppers."""
+    if isinstance(value, str):
+        return b(0, SPECIAL[value])
+    return b(2) + struct.pack("<f", float(value))
+
+
+def u16(v):
+    return struct.pack("<H", v)
+
+
+def u64(v):
+    return struct.pack("<Q", v)
+
+
+def script(mode=0, a=((0, 1), (-1, 0)), bvec=(0, 0), c=0, limit=1, poisons=(), budget=2000, n=2, number=num):
+    """script<T, N>::read: the mode, A, b, c, the limit, the poisons (at, component, value), the budget."""
+    out = b(mode)
+    for i in range(n):
+        for j in range(n):
+            out += number(a[i][j] if i < len(a) and j < len(a[i]) else 0)
+    for i in range(n):
+        out += number(bvec[i] if i < len(bvec) else 0)
+    out += number(c) + number(limit) + b(len(poisons))
+    for at, component, value in poisons:
+        out += u16(at - 1) + b(component) + number(value)
+    return out + u16(budget - 1)
+
+
+# ---- fuzz_loops: selector, script, y, t0, dt, n_steps flag, then t1 (drawn: kind 0) or the count.
+LOOPS = ["euler", "midpoint", "heun", "ralston2", "kutta3", "ssprk3", "rk4", "rk38", "bogacki_shampine32",
+         "fehlberg45", "cash_karp54", "dormand_prince54", "fehlberg78", "dop853", "ab2", "ab3", "ab4", "ab5",
+         "abm4", "ab2_midpoint", "rk4_float", "midpoint_float", "ab4_float"]
+
+
+def loops(stepper, t0, dt, t1=None, n=None, y=(1, 0), f=None, number=num):
+    out = b(LOOPS.index(stepper)) + (f if f is not None else script(number=number))
+    out += number(y[0]) + number(y[1]) + number(t0) + number(dt)
+    if n is None:
+        return out + b(0) + b(0) + number(t1)
+    return out + b(1) + (b(1, n) if n < 64 else b(0) + u64(n))
+
+
+# ---- fuzz_loops_newtonian: selector, script, (stepper settings), force choice, x, v, t0, dt, loop.
+NEWTONIAN = ["newtonian_euler", "newtonian_midpoint", "newtonian_euler_richardson", "half_step",
+             "leapfrog_position_form", "beeman", "predictor_corrector", "euler_cromer", "euler_cromer_drift_first",
+             "velocity_verlet", "position_verlet", "forest_ruth", "blanes_moan4", "yoshida6", "boris",
+             "boris_relativistic", "velocity_verlet_float", "beeman_float"]
+VELOCITY_FORCES = {"newtonian_euler", "newtonian_midpoint", "newtonian_euler_richardson", "beeman", "predictor_corrector",
+                   "euler_cromer", "euler_cromer_drift_first", "velocity_verlet", "position_verlet", "forest_ruth",
+                   "blanes_moan4", "yoshida6", "velocity_verlet_float", "beeman_float"}
+
+
+def newtonian_loop(stepper, t0, dt, t1=None, n=None, settings=b(), x=(1, 0), v=(0, 1)):
+    boris = stepper.startswith("boris")
+    dim = 3 if boris else 2
+    out = b(NEWTONIAN.index(stepper)) + script(n=dim, a=((-1, 0, 0), (0, -1, 0), (0, 0, -1))) + settings
+    if boris:
+        out += num(0) + num(0) + num(1)  # B
+    elif stepper in VELOCITY_FORCES:
+        out += b(0)  # a force of position alone
+    for c in list(x) + [0] * (dim - len(x)):
+        out += num(c)
+    for c in list(v) + [0] * (dim - len(v)):
+        out += num(c)
+    out += num(t0) + num(dt)
+    if n is None:
+        return out + b(0) + b(0) + num(t1)
+    return out + b(1) + (b(1, n) if n < 64 else b(0) + u64(n))
+
+
+# ---- fuzz_steps: family, which, then the family's sequence.
+RK = ["euler", "midpoint", "heun", "ralston2", "kutta3", "ssprk3", "rk4", "rk38", "bogacki_shampine32", "fehlberg45",
+      "cash_karp54", "dormand_prince54", "fehlberg78", "dop853"]
+ADAMS = ["ab2", "ab3", "ab4", "ab5", "abm4", "abm4_midpoint"]
+STEPS_NEWTONIAN = NEWTONIAN[:14]
+
+
+def calls(sequence):
+    """The sequence of calls: (t, dt, form) for the first; then ("continue", form), ("dt", dt, form) or
+    (t, dt, form) for the others."""
+    out = b(len(sequence) - 1)
+    for i, call in enumerate(sequence):
+        if i == 0:
+            out += num(call[0]) + num(call[1])
+        elif call[0] == "continue":
+            out += b(2)
+        elif call[0] == "dt":
+            out += b(1) + num(call[1])
+        else:
+            out += b(0) + num(call[0]) + num(call[1])
+        out += b(call[-1])
+    return out
+
+
+def steps_rk(table, f, sequence, y=(0.25, 0.5)):
+    return b(0, RK.index(table)) + f + num(y[0]) + num(y[1]) + num(7) + num(8) + calls(sequence)
+
+
+def steps_adams(method, f, sequence, y=(0.25, 0.5)):
+    # (the form byte of each call is the reset choice: 1 = no reset)
+    return b(1, ADAMS.index(method)) + f + num(y[0]) + num(y[1]) + calls(sequence)
+
+
+def steps_newtonian(method, f, sequence, x=(1, 0), v=(0, 1), settings=b()):
+    out = b(2, STEPS_NEWTONIAN.index(method)) + f + settings
+    if method in VELOCITY_FORCES:
+        out += b(0)
+    return out + num(x[0]) + num(x[1]) + num(v[0]) + num(v[1]) + calls(sequence)
+
+
+def steps_boris(which, sequence, qm=(1,)):
+    out = b(3, which) + script(n=3) + num(0) + num(0) + num(1)
+    for q in qm:
+        out += num(q)
+    return out + num(1) + num(0) + num(0) + num(0) + num(1) + num(0) + calls(sequence)
+
+
+# ---- fuzz_events: selector, script, three g, the action, three directions and settings, the set, y, limits.
+EVENTS = ["rk4", "midpoint", "dormand_prince54", "abm4", "velocity_verlet", "newtonian_euler_richardson"]
+
+
+def g(kind, k, c):
+    return b(kind, k) + num(c) + b(1)  # no poison
+
+
+def events(stepper, tail, y=((1, 0),), shape=2, action=b(1, 1) + num(0.5), f=None, gs=None):
+    out = b(EVENTS.index(stepper)) + (f if f is not None else script(a=((0, 1), (-1, 0))))
+    # y0 = 0 (a bounce), y1 = 0 (recorded), t = 1e9 (terminal)
+    out += gs if gs is not None else g(0, 0, 0) + g(0, 1, 0) + g(1, 0, 1e9)
+    out += action
+    for direction in (1, 2, 2):
+        out += b(direction) + b(1)  # falling / either; default settings
+    out += b(shape)
+    for state in y:
+        out += num(state[0]) + num(state[1])
+    return out + b(0) + tail
+
+
+def events_integrate(t0, dt, t1):
+    return b(1) + num(t0) + num(dt) + b(0) + num(t1)
+
+
+def events_ticks(t0, dt, ticks, before=False):
+    return b(0) + b(1 if before else 0) + num(t0) + num(dt) + b(ticks - 1) + b(1) * ticks
+
+
+def write(target, name, data):
+    folder = os.path.join(ROOT, target)
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, name), "wb") as out:
+        out.write(data)
+
+
+def main():
+    forcing_nan_first = script(mode=1, bvec=(1, 1), poisons=[(1, 0, "nan")])
+    # Seeds: every stepper of each target once, on a plain problem.
+    for i, name in enumerate(LOOPS):
+        number = numf if name.endswith("_float") else num
+        write("fuzz_loops", "seed-%02d-%s" % (i, name), loops(name, 0, 0.125, t1=1, number=number))
+    for i, name in enumerate(NEWTONIAN):
+        settings = b(0) if name == "predictor_corrector" else b()
+        if name == "boris":
+            settings = num(1)
+        if name == "boris_relativistic":
+            settings = num(1) + num(10)
+        write("fuzz_loops_newtonian", "seed-%02d-%s" % (i, name),
+              newtonian_loop(name, 0, 0.125, t1=1, settings=settings))
+    for name in RK:
+        write("fuzz_steps", "seed-rk-%s" % name,
+              steps_rk(name, script(), [(0, 0.1, 0), ("continue", 1), ("continue", 2)]))
+    for name in ADAMS:
+        write("fuzz_steps", "seed-adams-%s" % name,
+              steps_adams(name, script(), [(0, 0.1, 1)] + [("continue", 1)] * 6))
+    for name in STEPS_NEWTONIAN:
+        settings = b(0) if name == "predictor_corrector" else b()
+        write("fuzz_steps", "seed-newtonian-%s" % name,
+              steps_newtonian(name, script(a=((-1, 0), (0, -1))),
+                              [(0, 0.1, 0), ("continue", 0), ("continue", 1), ("continue", 2)], settings=settings))
+    write("fuzz_steps", "seed-boris", steps_boris(0, [(0, 0.1, 1), ("continue", 0), ("continue", 2)]))
+    write("fuzz_steps", "seed-boris-relativistic",
+          steps_boris(1, [(0, 0.1, 1), ("continue", 0), ("continue", 2)], qm=(1, 10)))
+    for name in EVENTS:
+        newtonian = name in ("velocity_verlet", "newtonian_euler_richardson")
+        y = ((1, 0), (0, 1)) if newtonian else ((1, 0),)
+        write("fuzz_events", "seed-integrate-%s" % name, events(name, events_integrate(0, 0.125, 8), y=y))
+        write("fuzz_events", "seed-ticks-%s" % name, events(name, events_ticks(0, 0.125, 32, before=True), y=y))
+
+    # Regressions: issue 20's defects 1 to 7, and what the targets found.
+    # 1: a NaN from f in the midpoint rule's zero-weight stage, f ignoring y: ok before the fix.
+    write("fuzz_steps", "regression-1-zero-weight-stage-nan",
+          steps_rk("midpoint", forcing_nan_first, [(0, 0.1, 0)]))
+    write("fuzz_loops", "regression-1-zero-weight-stage-nan-loop",
+          loops("dormand_prince54", 0, 0.1, t1=1,
+                f=script(mode=1, bvec=(1, 1), poisons=[(2, 1, "inf")])))
+    # 2: Euler-Richardson's estimate ex = a0 dt^2 / 2 overflows (a = 2.5e307, v = -5e307, dt = 4).
+    write("fuzz_steps", "regression-2-euler-richardson-estimate-overflow",
+          steps_newtonian("newtonian_euler_richardson", script(mode=1, bvec=(2.5e307, 0)), [(0, 4, 1)],
+                          x=(0, 0), v=(-5e307, 0)))
+    # 3: dt against t1 where (t1 - t0) / dt underflows to -0.
+    write("fuzz_loops", "regression-3-underflowing-quotient", loops("rk4", 0, 1e300, t1=-1e-300))
+    # 4: integrate_n_steps whose last time overflows.
+    write("fuzz_loops", "regression-4-n-steps-overflow", loops("rk4", "max", "-max", n=3))
+    write("fuzz_loops_newtonian", "regression-4-n-steps-overflow",
+          newtonian_loop("velocity_verlet", "max", "-max", n=3))
+    # 5: the per-tick clock past the largest time (guarded in fuzz_events.cpp until the events rework lands).
+    write("fuzz_events", "regression-5-tick-clock-overflow", events("rk4", events_ticks("max/2", "max/4", 8),
+                                                                         f=script(mode=2, a=((0, 0), (0, 0))),
+                                                                         gs=g(0, 0, -1) + g(0, 1, -1) + g(0, 0, -2)))
+    # 6: an Adams starting step at t = NaN.
+    write("fuzz_steps", "regression-6-adams-nan-t",
+          steps_adams("ab4", script(mode=2, bvec=(1, 1)), [("nan", 0.1, 1)]))  # f reads neither t nor y
+    # 7: an Adams run on a finite grid near the largest double.
+    still = script(a=((0, 0), (0, 0)))  # y' = 0: the state stays finite whatever dt
+    write("fuzz_loops", "regression-7-adams-near-max", loops("ab4", 0.8 * 1.7976931348623157e308,
+                                                             0.019 * 1.7976931348623157e308, n=10, f=still))
+    # 8 (found here): integrate near the largest double counted grid times past t1, out to Inf.
+    write("fuzz_loops", "regression-8-grid-rounding-overflow",
+          loops("rk4", 0.5 * 1.7976931348623157e308, 0.1 * 1.7976931348623157e308,
+                t1=0.8 * 1.7976931348623157e308, f=still))
+    # 9 (found here): float, dt below the grid's rounding: observer times past t1 and back.
+    write("fuzz_loops", "regression-9-grid-times-past-t1",
+          loops("midpoint_float", 0.99609375, 1e-7, t1=0.99609613418579102, number=numf))
+    # 10 (found here): predictor_corrector's bad tolerance, refused after observing the initial state.
+    write("fuzz_loops_newtonian", "regression-10-tolerance-before-observing",
+          newtonian_loop("predictor_corrector", 0, 0.125, t1=1, settings=b(1) + num(-1)))
+
+
+if __name__ == "__main__":
+    main()
