@@ -23,6 +23,8 @@ run format scripts/format.sh --check
 for preset in host host-cxx20 host-clang host-clang-cxx20 host-sanitize; do
   run "$preset" host_preset "$preset"
 done
+# libFuzzer targets for the loops, the steps and the event loops, about a minute in all; any finding fails.
+run fuzz scripts/fuzz.sh --quick
 # The same portable tests cross-compiled and run on emulated Cortex-M3/M4F/M7/M33/M55 (M0+ built only),
 # then the firmware audit: no heap, no double arithmetic in float builds, flash and stack per stepper.
 run cortex-m scripts/test-targets.sh
