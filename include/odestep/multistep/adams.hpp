@@ -63,10 +63,13 @@ struct is_explicit_rk<explicit_rk<Method, State>> : std::true_type {};
 template <class Method, class State, class Starter = rk4<State>>
 class adams : public stepper_defaults<State> {
 public:
+    /// The state, std::array<T, N>.
     using state_type = State;
+    /// The scalar type T.
     using value_type = value_type_t<State>;
+    /// The method (table tag) type.
     using method_type = Method;
-    using starter_type = Starter;
+    using starter_type = Starter;  ///< the one-step method of the first k-1 steps
 
 private:
     using T = value_type;
@@ -81,7 +84,9 @@ private:
                   "odestep: the starter must step the same State as the multistep method");
 
 public:
+    /// The order of the global error (trait; see odestep::stepper_defaults).
     static constexpr int order = tab.order;
+    /// Stages per step (trait; see odestep::stepper_defaults).
     static constexpr std::size_t stages = 1;
     /// k: the method reads f at k successive steps, f_n (evaluated in the step) and the k-1 it keeps.
     static constexpr std::size_t steps = K;
@@ -144,11 +149,13 @@ private:
     // next one (f_n for the corrector), and the rest come from the history: predictor index j is f_{n-j},
     // corrector index j is f_{n+1-j}.
     struct predictor {
+        /// The number of coefficients of each kind.
         static constexpr std::size_t size = K;
         static constexpr std::size_t from_history = 1;  // first index read from the history
         static constexpr T weight(std::size_t j) noexcept { return tab.beta[j]; }
     };
     struct corrector {
+        /// The number of coefficients of each kind.
         static constexpr std::size_t size = pece ? K : 0;
         static constexpr std::size_t from_history = 2;
         static constexpr T weight(std::size_t j) noexcept { return pece ? tab.gamma[j] : T(0); }

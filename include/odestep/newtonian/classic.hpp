@@ -23,13 +23,21 @@ namespace odestep {
 template <class State, int Order, std::size_t Stages, std::size_t Evals, bool Symplectic, bool Reversible,
           bool VelocityForces>
 struct newtonian_traits : stepper_defaults<State> {
+    /// The order of the global error (trait; see odestep::stepper_defaults).
     static constexpr int order = Order;
+    /// Stages per step (trait; see odestep::stepper_defaults).
     static constexpr std::size_t stages = Stages;
+    /// The most evaluations of the right-hand side one step makes (trait; see odestep::stepper_defaults).
     static constexpr std::size_t rhs_evals_per_step = Evals;
+    /// The former name of rhs_evals_per_step.
     [[deprecated("odestep: use rhs_evals_per_step")]] static constexpr std::size_t accelerations_per_step = Evals;
+    /// Symplectic with a force of position alone (trait; see odestep::stepper_defaults).
     static constexpr bool symplectic = Symplectic;
+    /// The step with -dt undoes the step with dt (trait; see odestep::stepper_defaults).
     static constexpr bool time_reversible = Reversible;
+    /// The form of system the stepper takes (trait; see odestep::stepper_defaults).
     static constexpr system_form system = system_form::newtonian;
+    /// Whether a(t, x, v) is accepted (trait; see odestep::stepper_defaults).
     static constexpr bool velocity_forces = VelocityForces;
 };
 
@@ -40,6 +48,7 @@ class newtonian_euler : public newtonian_traits<State, 1, 1, 1, false, false, tr
 public:
     using typename newtonian_traits<State, 1, 1, 1, false, false, true>::value_type;
 
+    /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
     [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) const {
         const State acc = detail::acceleration(a, t, x, v);
@@ -59,6 +68,7 @@ class newtonian_midpoint : public newtonian_traits<State, 1, 1, 1, false, false,
 public:
     using typename newtonian_traits<State, 1, 1, 1, false, false, true>::value_type;
 
+    /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
     [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) const {
         using T = value_type;
@@ -87,10 +97,14 @@ template <class State>
 class newtonian_euler_richardson : public newtonian_traits<State, 2, 2, 2, false, false, true> {
 public:
     using typename newtonian_traits<State, 2, 2, 2, false, false, true>::value_type;
+    /// The order of the embedded solution (trait; see odestep::stepper_defaults).
     static constexpr int embedded_order = 1;
+    /// The most evaluations of the estimating step (trait; see odestep::stepper_defaults).
     static constexpr std::size_t rhs_evals_per_error_step = 2;
+    /// Whether the stepper has an error-estimating step (trait; see odestep::stepper_defaults).
     static constexpr bool error_estimate = true;
 
+    /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
     [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) const {
         State ex;
@@ -147,8 +161,10 @@ class half_step : public newtonian_traits<State, 2, 1, 2, true, true, false> {
 public:
     using typename newtonian_traits<State, 2, 1, 2, true, true, false>::value_type;
 
+    /// Forgets the history: the next step starts afresh (call it after changing x or v yourself).
     constexpr void reset() noexcept { next_.clear(); }
 
+    /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
     [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
         using T = value_type;
@@ -189,8 +205,10 @@ class leapfrog_position_form : public newtonian_traits<State, 2, 1, 2, true, tru
 public:
     using typename newtonian_traits<State, 2, 1, 2, true, true, false>::value_type;
 
+    /// Forgets the history: the next step starts afresh (call it after changing x or v yourself).
     constexpr void reset() noexcept { next_.clear(); }
 
+    /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
     [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
         using T = value_type;
@@ -252,11 +270,12 @@ public:
     /// acc_prev the acc it had on entry (or a(t, x) after a self-starting step), and started is true; on
     /// status::non_finite all three are left exactly as they were.
     struct history {
-        State acc{};           // a_n = a(t_n, x_n), when started
-        State acc_prev{};      // a_{n-1}, when started
-        bool started = false;  // false: the next step evaluates a_n itself and is a velocity Verlet step
+        State acc{};           ///< a_n = a(t_n, x_n), when started
+        State acc_prev{};      ///< a_{n-1}, when started
+        bool started = false;  ///< false: the next step evaluates a_n itself and is a velocity Verlet step
     };
 
+    /// Forgets the history: the next step starts afresh (call it after changing x or v yourself).
     constexpr void reset() noexcept { next_.clear(); }
 
     /// (x, v) <- (x, v)(t + dt), the history kept and checked by the stepper. On status::non_finite x and v
@@ -331,11 +350,12 @@ template <class State>
 class predictor_corrector : public newtonian_traits<State, 2, 2, 1 + 16, false, false, true> {
 public:
     using typename newtonian_traits<State, 2, 2, 1 + 16, false, false, true>::value_type;
-    static constexpr int max_iterations = 16;  // the corrector's cap: rhs_evals_per_step = 1 + max_iterations
+    static constexpr int max_iterations = 16;  ///< the corrector's cap: rhs_evals_per_step = 1 + max_iterations
 
     /// Relative tolerance of the corrector iteration, in units of the state's magnitude.
     value_type tolerance = value_type(16) * std::numeric_limits<value_type>::epsilon();
 
+    /// Forgets the history: the next step starts afresh (call it after changing x or v yourself).
     constexpr void reset() noexcept { next_.clear(); }
 
     /// Corrector iterations the last successful step needed.
@@ -348,6 +368,7 @@ public:
         return tol > value_type(0) && detail::is_finite(tol) ? status::ok : status::invalid_tolerance;
     }
 
+    /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
     [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
         using T = value_type;
