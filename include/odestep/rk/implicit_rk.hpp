@@ -165,7 +165,10 @@ public:
             if (!detail::all_finite(f0)) return status::non_finite;
         }
         jacobian_t<State> jac;
-        const status js = detail::jacobian_of(f, t, y, f0, jac);
+        // With the system's own Jacobian and no explicit first stage, f0 is never computed and jacobian_of
+        // does not read its fy: y stands in, so that no uninitialized array is passed on.
+        const State& fy = need_f0 ? f0 : y;
+        const status js = detail::jacobian_of(f, t, y, fy, jac);
         if (js != status::ok) return js;
         State next;
         status s;
