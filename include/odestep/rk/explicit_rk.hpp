@@ -91,9 +91,9 @@ constexpr factored_weights<T, S> factor_weights(const std::array<T, S>& w) noexc
 template <class Method, class State>
 class explicit_rk : public stepper_defaults<State> {
 public:
-    using state_type = State;
-    using value_type = value_type_t<State>;
-    using method_type = Method;
+    using state_type = State;                ///< the state, std::array<T, N> or a user type
+    using value_type = value_type_t<State>;  ///< T, the scalar type of the state and the table
+    using method_type = Method;              ///< the table's type (odestep::tables)
 
 private:
     using T = value_type;
@@ -144,14 +144,15 @@ private:
     }
 
 public:
-    static constexpr int order = tab.order;
-    static constexpr std::size_t stages = S;
+    static constexpr int order = tab.order;   ///< the method's order, from the table
+    static constexpr std::size_t stages = S;  ///< the table's stages
     /// Right-hand-side evaluations of `step(f, y, t, dt)`, the most it ever makes.
     static constexpr std::size_t rhs_evals_per_step = count(plain_stages);
     /// Right-hand-side evaluations of the step that also returns the error estimate (0 without one).
     static constexpr std::size_t rhs_evals_per_error_step = E > 0 ? count(error_stages) : 0;
-    static constexpr bool error_estimate = E > 0;
-    static constexpr std::size_t error_estimates = E;
+    static constexpr bool error_estimate = E > 0;      ///< the table has an embedded method
+    static constexpr std::size_t error_estimates = E;  ///< how many embedded methods the table has
+    /// The order of the (first) embedded method, 0 without one.
     static constexpr int embedded_order = E > 0 ? tab.embedded_order[0] : 0;
 
     /// y <- y(t + dt). On `status::non_finite` y is left as it was.

@@ -16,8 +16,10 @@ namespace odestep {
 /// The result of narrowing a bracket: f(a) < 0 <= f(b), a < b.
 template <class T>
 struct root_bracket {
-    T a, fa;                  ///< the last point strictly on the negative side
-    T b, fb;                  ///< the first point on the non-negative side (fb may be exactly 0)
+    T a;                      ///< the last point strictly on the negative side
+    T fa;                     ///< f(a) < 0
+    T b;                      ///< the first point on the non-negative side
+    T fb;                     ///< f(b) >= 0 (may be exactly 0)
     std::size_t evaluations;  ///< calls of f made
     bool converged;           ///< b - a <= tol was reached within the cap
     bool failed;              ///< f returned NaN or Inf: the search stopped at once; a, b are the last valid bracket
@@ -145,6 +147,7 @@ constexpr std::size_t secant_family_worst_case(T width, T tol) noexcept {
 
 // What Illinois, Anderson-Bjorck and Brent share: the pace rule's worst case.
 struct paced_secant_family {
+    /// The most calls of f `narrow` makes on a bracket of this width to reach tol (no cap).
     template <class T>
     static constexpr std::size_t worst_case_evaluations(T width, T tol) noexcept {
         return secant_family_worst_case(width, tol);
@@ -330,11 +333,13 @@ struct itp_rule {
 /// Bisection: the midpoint a + (b - a) / 2 every time. The optimal worst case among bracketing methods,
 /// and no better than it on any function: ceil(log2(width / tol)) calls.
 struct bisection {
+    /// The most calls of f `narrow` makes on a bracket of this width to reach tol (no cap).
     template <class T>
     static constexpr std::size_t worst_case_evaluations(T width, T tol) noexcept {
         return detail::halvings(width, tol);
     }
 
+    /// Narrows [a, b] (f(a) fa < 0 <= fb = f(b)) until b - a <= tol or cap calls of f were made.
     template <class T, class F>
     [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(
         F&& f, T a, T fa, T b, T fb, T tol, std::size_t cap) noexcept(detail::nothrow_bracket_call_v<T, F>) {
@@ -347,6 +352,7 @@ struct bisection {
 /// of an equation", BIT 11 (1971) 168-174; order 3^(1/3) ~ 1.44 per call at a simple root). Safeguarded:
 /// at most 2 n + 2 calls, n = bisection's count.
 struct illinois : detail::paced_secant_family {
+    /// Narrows [a, b] (f(a) fa < 0 <= fb = f(b)) until b - a <= tol or cap calls of f were made.
     template <class T, class F>
     [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(
         F&& f, T a, T fa, T b, T fb, T tol, std::size_t cap) noexcept(detail::nothrow_bracket_call_v<T, F>) {
@@ -359,6 +365,7 @@ struct illinois : detail::paced_secant_family {
 /// (Anderson & Bjorck, "A new high order method of regula falsi type for computing a root of an
 /// equation", BIT 13 (1973) 253-264). Safeguarded: at most 2 n + 2 calls, n = bisection's count.
 struct anderson_bjorck : detail::paced_secant_family {
+    /// Narrows [a, b] (f(a) fa < 0 <= fb = f(b)) until b - a <= tol or cap calls of f were made.
     template <class T, class F>
     [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(
         F&& f, T a, T fa, T b, T fb, T tol, std::size_t cap) noexcept(detail::nothrow_bracket_call_v<T, F>) {
@@ -371,6 +378,7 @@ struct anderson_bjorck : detail::paced_secant_family {
 /// procedure zero). Brent's test alone allows about n^2 calls; with the loop's pace rule at most
 /// 2 n + 2, n = bisection's count.
 struct brent : detail::paced_secant_family {
+    /// Narrows [a, b] (f(a) fa < 0 <= fb = f(b)) until b - a <= tol or cap calls of f were made.
     template <class T, class F>
     [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(
         F&& f, T a, T fa, T b, T fb, T tol, std::size_t cap) noexcept(detail::nothrow_bracket_call_v<T, F>) {
@@ -386,6 +394,7 @@ struct brent : detail::paced_secant_family {
 /// parameters are those the paper suggests: kappa1 = 0.2 / (b - a) of the initial bracket, kappa2 = 2,
 /// n0 = 1: at most one call more than bisection.
 struct itp {
+    /// The most calls of f `narrow` makes on a bracket of this width to reach tol (no cap).
     template <class T>
     static constexpr std::size_t worst_case_evaluations(T width, T tol) noexcept {
         const std::size_t n = detail::halvings(width, tol);
@@ -393,6 +402,7 @@ struct itp {
         return n + 1;  // n0 = 1
     }
 
+    /// Narrows [a, b] (f(a) fa < 0 <= fb = f(b)) until b - a <= tol or cap calls of f were made.
     template <class T, class F>
     [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(
         F&& f, T a, T fa, T b, T fb, T tol, std::size_t cap) noexcept(detail::nothrow_bracket_call_v<T, F>) {
