@@ -9,7 +9,7 @@ cmake --preset examples >/dev/null
 cmake --build --preset examples -j"$(nproc)"
 for example in quickstart harmonic_oscillator radioactive_decay euler_table earth_orbit pendulum kepler_orbits crossed_fields \
                pebble projectile bouncing_ball coffee euler_accuracy position_force phase_space nuclear_decay coffee_filter \
-               convergence kepler_energy curveball dipole steel_ball; do
+               convergence kepler_energy curveball dipole steel_ball stiff; do
   echo "== $example"
   "build/examples/examples/$example" build/examples/examples/data
 done

@@ -12,7 +12,7 @@ command -v gnuplot >/dev/null || { echo "plots: gnuplot is missing (scripts/inst
 [ -d "$data" ] || { echo "plots: no CSV directory $data (run the examples first: scripts/examples.sh)"; exit 1; }
 mkdir -p "$out"
 pictures=(pendulum_phase sho_phase kepler_energy convergence pebble curveball bouncing_ball dipole_orbit
-          dipole_invariants coffee_filter nuclear_decay euler_stability two_objects)
+          dipole_invariants coffee_filter nuclear_decay euler_stability two_objects stiff_rc stiff_robertson)
 png_magic=89504e470d0a1a0a
 for picture in "${pictures[@]}"; do
   png="$out/$picture.png"
