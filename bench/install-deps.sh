@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the benchmarks need, only those that are missing: scripts/bench.sh's (g++,
-# valgrind, Boost, GSL; scripts/install-deps.sh test installs those too) and SUNDIALS for the ARKODE variants of
-# the stiff cases (bench/stiff_*.cpp, bench/sundials.hpp). libsundials-dev pulls in MPI (OpenMPI and its
-# PETSc, hypre, gfortran: 140 new packages on the Debian 12 image these figures come from), which is why it is installed here and not by scripts/install-deps.sh's test
-# profile; the stiff cases build without it (their ARKODE variants are left out). Usage: bench/install-deps.sh
+# valgrind, Boost, GSL; scripts/install-deps.sh test installs those too) and SUNDIALS for the ARKODE variants
+# of the stiff cases (bench/stiff_*.cpp, bench/sundials.hpp). libsundials-dev pulls in OpenMPI, PETSc, hypre
+# and gfortran (140 new packages on the Debian 12 image the figures come from), which is why it is installed
+# here and not by scripts/install-deps.sh's test profile; the stiff cases build without it (their ARKODE
+# variants are left out). Usage: bench/install-deps.sh
 set -euo pipefail
 packages=(g++ valgrind libboost-dev libgsl-dev libsundials-dev)
 missing=()
