@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "cpu_time.hpp"
 #include "harness.hpp"
 #include "sundials.hpp"
 
@@ -169,6 +170,9 @@ int main(int argc, char** argv) {
                         bench_step_stiff_vanderpol_arkode_sdirk4, false,
                         [](const State& y, double t) { arkode_sdirk4.start(y.data(), t); }});
 #endif
+    // cpu [rounds]: the runs timed by the thread's CPU clock as well (bench/cpu_time.hpp)
+    if (argc > 1 && std::strcmp(argv[1], "cpu") == 0)
+        return bench::cpu_time<State>(p, variants, argc > 2 ? std::atoi(argv[2]) : 51);
     int rc = bench::main<State>(argc, argv, p, variants);
 #ifdef BENCH_HAVE_SUNDIALS
     if (argc < 2 || std::strcmp(argv[1], "check") == 0) {
