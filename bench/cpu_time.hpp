@@ -2,8 +2,8 @@
 //
 // The harness's `time` measures wall time (steady_clock) over batches of whole runs. On a loaded machine a
 // batch that lasts milliseconds (one run of SUNDIALS ARKODE's variants: 400 to 800 steps of 2 to 6 us) is
-// preempted by other processes, and its wall median comes out 1.3 to 3 times its CPU time, while the
-// sub-millisecond batches of odestep and Odeint are not. This mode times the same runs (from y0 with the
+// preempted by other processes, and its wall median comes out up to 3 times its CPU time, while the
+// sub-millisecond batches of odestep and Odeint mostly are not. This mode times the same runs (from y0 with the
 // variant's start hook, interleaved round by round, the order rotated) with CLOCK_THREAD_CPUTIME_ID, which
 // does not advance while the thread waits, and prints both clocks' medians and minima: on an idle machine
 // the two agree.
