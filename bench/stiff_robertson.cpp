@@ -1,6 +1,6 @@
 // Robertson's kinetics (3 states, double), stiff, from t = 1 to 41 with dt = 0.1 (400 steps): odestep's implicit
-// steppers and RODAS3 against Boost.Odeint's rosenbrock4 and implicit_euler (uBLAS), every one with the exact
-// Jacobian, at the same step size. The start at t = 1 skips the initial layer, where a Jacobian frozen at the
+// steppers and RODAS3 against Boost.Odeint's rosenbrock4 and implicit_euler (uBLAS) and, where SUNDIALS is
+// installed, ARKODE's DIRK steppers (bench/sundials.hpp), every one with the exact Jacobian, at the same step size. The start at t = 1 skips the initial layer, where a Jacobian frozen at the
 // step's start cannot see the stiffness yet (docs/stiff.md); y(1) and y(41) come from DOP853 in long double.
 #include <boost/numeric/odeint/stepper/implicit_euler.hpp>
 #include <boost/numeric/odeint/stepper/rosenbrock4.hpp>
@@ -157,7 +157,8 @@ int main(int argc, char** argv) {
         {"odeint_implicit_euler", "Odeint implicit_euler (uBLAS), epsilon 1e-10",
          bench_step_stiff_robertson_odeint_implicit_euler, false}};
 #ifdef BENCH_HAVE_SUNDIALS
-    // ARKODE's runs start with ARKStepReset (the start hook), as odestep's and Odeint's steps need nothing.
+    // ARKODE keeps its state between steps: each run starts with ARKStepReset (the start hook); odestep's and
+    // Odeint's steps need nothing.
     const bench::variant<State> ark_sdirk3{"arkode_sdirk3",
                                            "SUNDIALS ARKODE ARKStep, Alexander's SDIRK 3 as a user table",
                                            bench_step_stiff_robertson_arkode_sdirk3, false,

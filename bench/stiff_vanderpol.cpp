@@ -1,7 +1,8 @@
 // Van der Pol with mu = 1000 (2 states, double), y1' = y2, y2' = mu (1 - y1^2) y2 - y1 from y = (2, 0): the slow
 // branch, t from 0 to 800 with dt = 1 (800 steps; the first jump is at t = 807), stiff (eigenvalue about -3000).
-// odestep's implicit steppers and RODAS3 against Boost.Odeint's rosenbrock4 and implicit_euler (uBLAS), each with
-// the exact Jacobian, at the same step size; y(800) from DOP853 in long double with steps of 2.5e-4.
+// odestep's implicit steppers and RODAS3 against Boost.Odeint's rosenbrock4 and implicit_euler (uBLAS) and, where
+// SUNDIALS is installed, ARKODE's DIRK steppers (bench/sundials.hpp), each with the exact Jacobian, at the same
+// step size; y(800) from DOP853 in long double with steps of 2.5e-4.
 #include <boost/numeric/odeint/stepper/implicit_euler.hpp>
 #include <boost/numeric/odeint/stepper/rosenbrock4.hpp>
 
@@ -157,7 +158,8 @@ int main(int argc, char** argv) {
         {"odeint_implicit_euler", "Odeint implicit_euler (uBLAS), epsilon 1e-10",
          bench_step_stiff_vanderpol_odeint_implicit_euler, false}};
 #ifdef BENCH_HAVE_SUNDIALS
-    // ARKODE's runs start with ARKStepReset (the start hook), as odestep's and Odeint's steps need nothing.
+    // ARKODE keeps its state between steps: each run starts with ARKStepReset (the start hook); odestep's and
+    // Odeint's steps need nothing.
     const bench::variant<State> ark_sdirk3{"arkode_sdirk3",
                                            "SUNDIALS ARKODE ARKStep, Alexander's SDIRK 3 as a user table",
                                            bench_step_stiff_vanderpol_arkode_sdirk3, false,
