@@ -1,7 +1,8 @@
 // Robertson's kinetics (3 states, double), stiff, from t = 1 to 41 with dt = 0.1 (400 steps): odestep's implicit
 // steppers and RODAS3 against Boost.Odeint's rosenbrock4 and implicit_euler (uBLAS) and, where SUNDIALS is
-// installed, ARKODE's DIRK steppers (bench/sundials.hpp), every one with the exact Jacobian, at the same step size. The start at t = 1 skips the initial layer, where a Jacobian frozen at the
-// step's start cannot see the stiffness yet (docs/stiff.md); y(1) and y(41) come from DOP853 in long double.
+// installed, ARKODE's DIRK steppers (bench/sundials.hpp), every one with the exact Jacobian, at the same step
+// size. The start at t = 1 skips the initial layer, where a Jacobian frozen at the step's start cannot see the
+// stiffness yet (docs/stiff.md); y(1) and y(41) come from DOP853 in long double.
 #include <boost/numeric/odeint/stepper/implicit_euler.hpp>
 #include <boost/numeric/odeint/stepper/rosenbrock4.hpp>
 
