@@ -23,9 +23,9 @@
 //     step's end, which ARKODE copies from the last stage for these tables (all stiffly accurate, c_s = 1):
 //     measured, it makes no difference in evaluations or time here.
 // Define BENCH_NO_SUNDIALS to build the cases without it even where it is installed.
-// SUNDIALS allocates its vectors, matrix and solver when the stepper is created; ARKStepReset() (the start
-// of every run) reuses them. The heap allocations inside the timed steps are counted by bench/README.md's
-// Callgrind command (calls to malloc, calloc and realloc in each variant's dump).
+// SUNDIALS allocates when the stepper is created (96 calls to malloc here) and in its first step (34 more,
+// workspace made lazily), never after: ARKStepReset() (the start of every run) and the steps reuse it all.
+// (Counted with malloc wrapped; the steps' count, zero, with Callgrind as bench/RESULTS.md, "Stiff", shows.)
 #ifndef ODESTEP_BENCH_SUNDIALS_HPP
 #define ODESTEP_BENCH_SUNDIALS_HPP
 
