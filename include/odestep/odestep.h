@@ -1,0 +1,313 @@
+/* odestep: the C API (C99), for firmware written in C. Implemented over the C++ templates by the static
+ * library odestep::odestep_c (src/); see docs/c_api.md. */
+#ifndef ODESTEP_ODESTEP_H
+#define ODESTEP_ODESTEP_H
+
+/// \file
+/// The C interface of odestep. Every name is prefixed `odestep_` (types, functions, objects) or
+/// `ODESTEP_` (macros, enumerators). Nothing allocates: every object the library works on (the stepper,
+/// the event loop) is a struct the caller owns, whose size this header gives.
+///
+/// Float and double: every type and function exists twice, with the suffix `_f` (float) or `_d`
+/// (double), as the C library's `sinf`/`sin` do. C99 has no overloading (and C11's `_Generic` is not
+/// C99), and a suffix lets a float firmware link float code only.
+///
+/// The state size n is chosen at run time, 1 to ODESTEP_C_MAX_STATES. That maximum is fixed when the
+/// library is compiled (CMake: `-DODESTEP_C_MAX_STATES=16`; the target odestep::odestep_c passes it on to
+/// its users as a compile definition) and must be the same in every file that includes this header:
+/// odestep_max_states() returns the library's value, to check at start-up.
+
+#include <stddef.h>
+#include <stdint.h>
+
+/// The largest state size n the C API takes (x and v each, for Newton's equations). Every step computes
+/// ODESTEP_C_MAX_STATES components (the ones past n are zero), so keep it close to the n you use.
+#ifndef ODESTEP_C_MAX_STATES
+#define ODESTEP_C_MAX_STATES 8
+#endif
+#if ODESTEP_C_MAX_STATES < 1
+#error "odestep: ODESTEP_C_MAX_STATES must be at least 1"
+#endif
+
+/// The largest number of events the C event loop watches at once (its descriptor array has 1 to this many
+/// entries). Each one costs an event function call per step whether it is used or not; same rule as
+/// ODESTEP_C_MAX_STATES: fixed when the library is compiled.
+#ifndef ODESTEP_C_MAX_EVENTS
+#define ODESTEP_C_MAX_EVENTS 4
+#endif
+#if ODESTEP_C_MAX_EVENTS < 1
+#error "odestep: ODESTEP_C_MAX_EVENTS must be at least 1"
+#endif
+
+/// Storage of a stepper, in scalars (float or double): the largest stepper object (Adams-Bashforth-Moulton
+/// 4: three past derivatives and where the next step must start) with room to spare. The library checks
+/// at compile time that every stepper fits.
+#define ODESTEP_C_STEPPER_SCALARS (4 * ODESTEP_C_MAX_STATES + 16)
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- status ------------------------------------------------------------------------------------------- */
+
+/// What every fallible call returns; the same values as the C++ `odestep::status` (a test compares each).
+/// Whatever the value, the caller's state is the last good one.
+typedef enum odestep_status {
+    ODESTEP_OK = 0,                 ///< success
+    ODESTEP_INVALID_TIME = 1,       ///< a time is NaN or infinite; nothing was touched
+    ODESTEP_INVALID_STEP = 2,       ///< dt is zero, NaN or infinite; nothing was touched
+    ODESTEP_WRONG_DIRECTION = 3,    ///< dt points away from t1; nothing was touched
+    ODESTEP_TOO_MANY_STEPS = 4,     ///< (t1 - t0) / dt does not fit the step counter; nothing was touched
+    ODESTEP_NON_FINITE = 5,         ///< a step produced NaN or Inf; it was rolled back
+    ODESTEP_NO_CONVERGENCE = 6,     ///< an iteration did not meet its tolerance within its cap; rolled back
+    ODESTEP_STEP_MISMATCH = 7,      ///< a step that does not continue a multistep history (another dt or t,
+                                    ///< or a shortened last step); nothing was touched
+    ODESTEP_INVALID_TOLERANCE = 8,  ///< a tolerance (event: tolerance, band, dead time) is negative or not
+                                    ///< finite; nothing was touched
+    ODESTEP_STOPPED_BY_EVENT = 9,   ///< an event stopped the run: the state is the one at the event's time
+    ODESTEP_EVENT_LIMIT = 10,       ///< more events fired in one step than the limit allows; the state is the
+                                    ///< one after the last event that fired
+    ODESTEP_NON_FINITE_EVENT = 11,  ///< an event function returned NaN or Inf; the state is the last one
+                                    ///< where all were finite
+    ODESTEP_SINGULAR_MATRIX = 12,   ///< an implicit method's matrix is singular; rolled back
+    ODESTEP_SUBSTEP_LIMIT = 13,     ///< an adaptive step needed more internal steps than its cap
+    ODESTEP_STEP_TOO_SMALL = 14,    ///< an adaptive step size fell below what the time resolves
+    ODESTEP_INVALID_SETTING = 15    ///< an argument other than a time, a step or a tolerance is wrong: a null
+                                    ///< pointer, n of 0 or above ODESTEP_C_MAX_STATES, a stepper not
+                                    ///< initialised or of the other kind of system; nothing was touched
+} odestep_status;
+
+/// A short English name of a status ("ok", "non_finite", ...), in constant storage; "unknown" for a value
+/// that is not a status.
+const char* odestep_status_name(odestep_status s);
+
+/// ODESTEP_C_MAX_STATES as the library was compiled with it. Compare it with the macro at start-up: a
+/// mismatch means the storage structs have another size in the caller than in the library.
+size_t odestep_max_states(void);
+
+/// ODESTEP_C_MAX_EVENTS as the library was compiled with it (see odestep_max_states).
+size_t odestep_max_events(void);
+
+/// What odestep_method_info_d / _f report about a method.
+typedef struct odestep_method_info {
+    const char* name;             ///< the method's name ("rk4", "velocity_verlet", ...), constant storage
+    int order;                    ///< the order of the global error
+    int error_estimates;          ///< 0, 1 or 2: how many estimates odestep_step_error_d can return
+    int newtonian;                ///< 1: steps x'' = a(t, x) (odestep_step_newton_d); 0: y' = f(t, y)
+    int uniform_steps;            ///< 1: every step of one history must have the same dt (Adams)
+    unsigned rhs_evals_per_step;  ///< the most right-hand-side (or acceleration) evaluations one step makes
+} odestep_method_info;
+
+/* ---- double ------------------------------------------------------------------------------------------- */
+
+/// The right-hand side of y' = f(t, y): writes dydt[0 .. n-1] from y[0 .. n-1]. ctx is the system's.
+typedef void (*odestep_rhs_d)(double t, const double* y, double* dydt, void* ctx);
+
+/// A first-order system: its right-hand side, the context handed to it, and the state size n.
+typedef struct odestep_system_d {
+    odestep_rhs_d f;  ///< the right-hand side, not null
+    void* ctx;        ///< handed to f unchanged (may be null)
+    size_t n;         ///< the state size, 1 to ODESTEP_C_MAX_STATES
+} odestep_system_d;
+
+/// The acceleration of x'' = a(t, x), a force of position alone: writes a[0 .. n-1] from x[0 .. n-1].
+typedef void (*odestep_accel_d)(double t, const double* x, double* a, void* ctx);
+
+/// Newton's equations x'' = a(t, x): the acceleration, its context, and n (the size of x and of v).
+typedef struct odestep_newton_d {
+    odestep_accel_d a;  ///< the acceleration, not null
+    void* ctx;          ///< handed to a unchanged (may be null)
+    size_t n;           ///< the size of x and of v, 1 to ODESTEP_C_MAX_STATES
+} odestep_newton_d;
+
+/// A method, opaque: one of the constant objects below (odestep_rk4_d, ...), named by its address.
+typedef struct odestep_method_d odestep_method_d;
+
+/// Euler, order 1 (y' = f).
+extern const odestep_method_d odestep_euler_d;
+/// Euler-Richardson (the midpoint rule), order 2, with the estimate h (k2 - k1).
+extern const odestep_method_d odestep_euler_richardson_d;
+/// Heun (the explicit trapezoid), order 2.
+extern const odestep_method_d odestep_heun_d;
+/// The classic Runge-Kutta method, order 4.
+extern const odestep_method_d odestep_rk4_d;
+/// Bogacki-Shampine 3(2), order 3, with the estimate against its 2nd-order solution.
+extern const odestep_method_d odestep_bs32_d;
+/// Dormand-Prince 5(4), order 5, with the estimate against its 4th-order solution.
+extern const odestep_method_d odestep_dp54_d;
+/// Dormand-Prince 8(5,3), order 8, with the estimates against its 5th- and 3rd-order solutions.
+extern const odestep_method_d odestep_dop853_d;
+/// Adams-Bashforth 4 (the first three steps by RK4), its history in the stepper.
+extern const odestep_method_d odestep_ab4_d;
+/// Adams-Bashforth-Moulton 4, PECE (the first three steps by RK4), its history in the stepper.
+extern const odestep_method_d odestep_abm4_d;
+/// Euler-Cromer (symplectic Euler, kick then drift), order 1, x'' = a(t, x).
+extern const odestep_method_d odestep_euler_cromer_d;
+/// Velocity Verlet, order 2, symplectic, x'' = a(t, x).
+extern const odestep_method_d odestep_velocity_verlet_d;
+/// Forest-Ruth, order 4, symplectic, x'' = a(t, x).
+extern const odestep_method_d odestep_forest_ruth_d;
+
+/// A stepper: a method and the storage its C++ object lives in (an Adams history). Caller-owned; set up
+/// with odestep_stepper_init_d before use. Do not copy an initialised stepper between steps of one run.
+typedef struct odestep_stepper_d {
+    const odestep_method_d* method;  ///< the method; set by odestep_stepper_init_d
+    union {
+        unsigned char bytes[ODESTEP_C_STEPPER_SCALARS * sizeof(double)];  ///< the stepper object
+        double align_scalar;                                              ///< alignment only
+        void* align_pointer;                                              ///< alignment only
+        uint64_t align_integer;                                           ///< alignment only
+    } storage;                                                            ///< not to be touched
+} odestep_stepper_d;
+
+/// What a fixed-step loop reports besides its status: the time of the state and the steps completed.
+typedef struct odestep_run_d {
+    double t;        ///< the time of the state (t1, or the last good time on failure)
+    uint64_t steps;  ///< steps completed
+} odestep_run_d;
+
+/// The observer of odestep_integrate_d: called with the initial state and after every step.
+typedef void (*odestep_observer_d)(double t, const double* y, void* ctx);
+/// The observer of odestep_integrate_newton_d.
+typedef void (*odestep_newton_observer_d)(double t, const double* x, const double* v, void* ctx);
+
+/// Sets up `stepper` for `method` (an empty history). ODESTEP_INVALID_SETTING if either is null.
+odestep_status odestep_stepper_init_d(odestep_stepper_d* stepper, const odestep_method_d* method);
+
+/// Empties the stepper's history (Adams): the next step accepts any t and dt. Call it after changing the
+/// state by hand between steps. Does nothing for the one-step methods or an uninitialised stepper.
+void odestep_stepper_reset_d(odestep_stepper_d* stepper);
+
+/// Describes a method (order, estimates, kind). ODESTEP_INVALID_SETTING if an argument is null.
+odestep_status odestep_method_info_d(const odestep_method_d* method, odestep_method_info* info);
+
+/// One step of y' = f(t, y): y[0 .. n-1] <- y(t + dt). Returns ODESTEP_INVALID_TIME for a t that is not
+/// finite, ODESTEP_INVALID_STEP for a dt that is 0 or not finite, ODESTEP_INVALID_SETTING for a null
+/// argument, n out of range or a Newtonian method, ODESTEP_STEP_MISMATCH for an Adams step off its
+/// history's grid; in each case nothing was touched. ODESTEP_NON_FINITE: the step made NaN or Inf and y
+/// is unchanged.
+odestep_status odestep_step_d(odestep_stepper_d* stepper, const odestep_system_d* system, double* y, double t,
+                              double dt);
+
+/// As odestep_step_d, and error[0 .. n-1] = y_{n+1} - yhat_{n+1} against the method's embedded solution
+/// (error2: the second estimate of DOP853, its 3rd-order one; pass null when not wanted). A method with
+/// fewer estimates than asked for gives ODESTEP_INVALID_SETTING. error and error2 are written only on
+/// success.
+odestep_status odestep_step_error_d(odestep_stepper_d* stepper, const odestep_system_d* system, double* y, double t,
+                                    double dt, double* error, double* error2);
+
+/// One step of x'' = a(t, x): (x, v) <- (x, v)(t + dt), each of n components. Statuses as odestep_step_d
+/// (a first-order method gives ODESTEP_INVALID_SETTING). The single step evaluates a afresh (velocity
+/// Verlet: 2 evaluations); the loop odestep_integrate_newton_d reuses the last one (1 per step).
+odestep_status odestep_step_newton_d(odestep_stepper_d* stepper, const odestep_newton_d* system, double* x, double* v,
+                                     double t, double dt);
+
+/// Integrates y' = f(t, y) from t0 to exactly t1 with steps of dt (t_i = t0 + i dt from an integer counter;
+/// the last step is shortened to end on t1, which an Adams method refuses with ODESTEP_STEP_MISMATCH before
+/// anything is touched). `observe` (may be null) sees the initial state and every step; `run` (may be null)
+/// gets the time of y and the steps completed. On failure y is the last good state, at run->t. The stepper's
+/// history is emptied first.
+odestep_status odestep_integrate_d(odestep_stepper_d* stepper, const odestep_system_d* system, double* y, double t0,
+                                   double t1, double dt, odestep_observer_d observe, void* observer_ctx,
+                                   odestep_run_d* run);
+
+/// odestep_integrate_d for Newton's equations x'' = a(t, x), x and v of n components each.
+odestep_status odestep_integrate_newton_d(odestep_stepper_d* stepper, const odestep_newton_d* system, double* x,
+                                          double* v, double t0, double t1, double dt, odestep_newton_observer_d observe,
+                                          void* observer_ctx, odestep_run_d* run);
+
+/* ---- float: the same API in single precision (see the double functions for each one's contract) ------- */
+
+/// The right-hand side of y' = f(t, y) in float.
+typedef void (*odestep_rhs_f)(float t, const float* y, float* dydt, void* ctx);
+/// A first-order system in float.
+typedef struct odestep_system_f {
+    odestep_rhs_f f;  ///< the right-hand side, not null
+    void* ctx;        ///< handed to f unchanged (may be null)
+    size_t n;         ///< the state size, 1 to ODESTEP_C_MAX_STATES
+} odestep_system_f;
+/// The acceleration of x'' = a(t, x) in float.
+typedef void (*odestep_accel_f)(float t, const float* x, float* a, void* ctx);
+/// Newton's equations in float.
+typedef struct odestep_newton_f {
+    odestep_accel_f a;  ///< the acceleration, not null
+    void* ctx;          ///< handed to a unchanged (may be null)
+    size_t n;           ///< the size of x and of v, 1 to ODESTEP_C_MAX_STATES
+} odestep_newton_f;
+/// A method in float, opaque.
+typedef struct odestep_method_f odestep_method_f;
+/// Euler in float.
+extern const odestep_method_f odestep_euler_f;
+/// Euler-Richardson in float.
+extern const odestep_method_f odestep_euler_richardson_f;
+/// Heun in float.
+extern const odestep_method_f odestep_heun_f;
+/// RK4 in float.
+extern const odestep_method_f odestep_rk4_f;
+/// Bogacki-Shampine 3(2) in float.
+extern const odestep_method_f odestep_bs32_f;
+/// Dormand-Prince 5(4) in float.
+extern const odestep_method_f odestep_dp54_f;
+/// DOP853 in float.
+extern const odestep_method_f odestep_dop853_f;
+/// Adams-Bashforth 4 in float.
+extern const odestep_method_f odestep_ab4_f;
+/// Adams-Bashforth-Moulton 4 in float.
+extern const odestep_method_f odestep_abm4_f;
+/// Euler-Cromer in float.
+extern const odestep_method_f odestep_euler_cromer_f;
+/// Velocity Verlet in float.
+extern const odestep_method_f odestep_velocity_verlet_f;
+/// Forest-Ruth in float.
+extern const odestep_method_f odestep_forest_ruth_f;
+
+/// A stepper in float (see odestep_stepper_d).
+typedef struct odestep_stepper_f {
+    const odestep_method_f* method;  ///< the method; set by odestep_stepper_init_f
+    union {
+        unsigned char bytes[ODESTEP_C_STEPPER_SCALARS * sizeof(float) + 8 * sizeof(void*)];  ///< the object
+        float align_scalar;                                                                  ///< alignment only
+        void* align_pointer;                                                                 ///< alignment only
+        uint64_t align_integer;                                                              ///< alignment only
+    } storage;                                                                               ///< not to be touched
+} odestep_stepper_f;
+
+/// What a float loop reports (see odestep_run_d).
+typedef struct odestep_run_f {
+    float t;         ///< the time of the state
+    uint64_t steps;  ///< steps completed
+} odestep_run_f;
+
+/// The observer of odestep_integrate_f.
+typedef void (*odestep_observer_f)(float t, const float* y, void* ctx);
+/// The observer of odestep_integrate_newton_f.
+typedef void (*odestep_newton_observer_f)(float t, const float* x, const float* v, void* ctx);
+
+/// odestep_stepper_init_d in float.
+odestep_status odestep_stepper_init_f(odestep_stepper_f* stepper, const odestep_method_f* method);
+/// odestep_stepper_reset_d in float.
+void odestep_stepper_reset_f(odestep_stepper_f* stepper);
+/// odestep_method_info_d in float.
+odestep_status odestep_method_info_f(const odestep_method_f* method, odestep_method_info* info);
+/// odestep_step_d in float.
+odestep_status odestep_step_f(odestep_stepper_f* stepper, const odestep_system_f* system, float* y, float t, float dt);
+/// odestep_step_error_d in float.
+odestep_status odestep_step_error_f(odestep_stepper_f* stepper, const odestep_system_f* system, float* y, float t,
+                                    float dt, float* error, float* error2);
+/// odestep_step_newton_d in float.
+odestep_status odestep_step_newton_f(odestep_stepper_f* stepper, const odestep_newton_f* system, float* x, float* v,
+                                     float t, float dt);
+/// odestep_integrate_d in float.
+odestep_status odestep_integrate_f(odestep_stepper_f* stepper, const odestep_system_f* system, float* y, float t0,
+                                   float t1, float dt, odestep_observer_f observe, void* observer_ctx,
+                                   odestep_run_f* run);
+/// odestep_integrate_newton_d in float.
+odestep_status odestep_integrate_newton_f(odestep_stepper_f* stepper, const odestep_newton_f* system, float* x,
+                                          float* v, float t0, float t1, float dt, odestep_newton_observer_f observe,
+                                          void* observer_ctx, odestep_run_f* run);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

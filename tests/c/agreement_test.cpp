@@ -1,0 +1,155 @@
+// The C API agrees with the C++ library: every status code has the C++ enum's value (at compile time),
+// and C runs give the C++ results bit for bit (same method, same system, same steps; the C state is padded
+// to ODESTEP_C_MAX_STATES with zeros, which changes no operation on the first n components).
+#include <array>
+#include <cstdio>
+#include <cstring>
+
+#include "odestep/explicit_rk.hpp"
+#include "odestep/integrate.hpp"
+#include "odestep/multistep.hpp"
+#include "odestep/newtonian.hpp"
+#include "odestep/odestep.h"
+#include "odestep/status.hpp"
+#include "odestep/symplectic.hpp"
+
+namespace {
+
+int failures = 0;
+
+void check(bool ok, const char* what, int line) {
+    if (!ok) {
+        std::printf("agreement_test.cpp:%d: %s\n", line, what);
+        ++failures;
+    }
+}
+#define AGREE(condition) check((condition), #condition, __LINE__)
+
+template <odestep_status C, odestep::status Cpp>
+constexpr bool same_value() {
+    return static_cast<int>(C) == static_cast<int>(Cpp);
+}
+static_assert(same_value<ODESTEP_OK, odestep::status::ok>());
+static_assert(same_value<ODESTEP_INVALID_TIME, odestep::status::invalid_time>());
+static_assert(same_value<ODESTEP_INVALID_STEP, odestep::status::invalid_step>());
+static_assert(same_value<ODESTEP_WRONG_DIRECTION, odestep::status::wrong_direction>());
+static_assert(same_value<ODESTEP_TOO_MANY_STEPS, odestep::status::too_many_steps>());
+static_assert(same_value<ODESTEP_NON_FINITE, odestep::status::non_finite>());
+static_assert(same_value<ODESTEP_NO_CONVERGENCE, odestep::status::no_convergence>());
+static_assert(same_value<ODESTEP_STEP_MISMATCH, odestep::status::step_mismatch>());
+static_assert(same_value<ODESTEP_INVALID_TOLERANCE, odestep::status::invalid_tolerance>());
+static_assert(same_value<ODESTEP_STOPPED_BY_EVENT, odestep::status::stopped_by_event>());
+static_assert(same_value<ODESTEP_EVENT_LIMIT, odestep::status::event_limit>());
+static_assert(same_value<ODESTEP_NON_FINITE_EVENT, odestep::status::non_finite_event>());
+static_assert(same_value<ODESTEP_SINGULAR_MATRIX, odestep::status::singular_matrix>());
+static_assert(same_value<ODESTEP_SUBSTEP_LIMIT, odestep::status::substep_limit>());
+static_assert(same_value<ODESTEP_STEP_TOO_SMALL, odestep::status::step_too_small>());
+static_assert(same_value<ODESTEP_INVALID_SETTING, odestep::status::invalid_setting>());
+// invalid_setting is the last C++ status: a status added after it must be added to the C header too.
+static_assert(std::strlen(odestep::to_string(static_cast<odestep::status>(16))) == std::strlen("unknown"),
+              "a C++ status past invalid_setting has no C counterpart");
+
+// Every status name agrees too (the C function wraps to_string).
+void test_names() {
+    for (int i = 0; i <= 16; ++i) {
+        AGREE(std::strcmp(odestep_status_name(static_cast<odestep_status>(i)),
+                          odestep::to_string(static_cast<odestep::status>(i))) == 0);
+    }
+}
+
+// Lorenz, as C and as C++.
+void lorenz_c(double, const double* y, double* dydt, void*) {
+    dydt[0] = 10.0 * (y[1] - y[0]);
+    dydt[1] = y[0] * (28.0 - y[2]) - y[1];
+    dydt[2] = y[0] * y[1] - 8.0 / 3.0 * y[2];
+}
+using state3 = std::array<double, 3>;
+void lorenz_cpp(double t, const state3& y, state3& dydt) { lorenz_c(t, y.data(), dydt.data(), nullptr); }
+
+template <class Stepper>
+void compare_first_order(const odestep_method_d* method, const char* name) {
+    odestep_stepper_d s;
+    AGREE(odestep_stepper_init_d(&s, method) == ODESTEP_OK);
+    const odestep_system_d sys{lorenz_c, nullptr, 3};
+    double yc[3] = {1.0, 1.0, 1.0};
+    state3 ycpp{1.0, 1.0, 1.0};
+    AGREE(odestep_integrate_d(&s, &sys, yc, 0.0, 2.0, 0.01, nullptr, nullptr, nullptr) == ODESTEP_OK);
+    AGREE(odestep::integrate(Stepper{}, lorenz_cpp, ycpp, 0.0, 2.0, 0.01).status == odestep::status::ok);
+    const bool same = yc[0] == ycpp[0] && yc[1] == ycpp[1] && yc[2] == ycpp[2];
+    if (!same)
+        std::printf("%s: C %.17g %.17g %.17g, C++ %.17g %.17g %.17g\n", name, yc[0], yc[1], yc[2], ycpp[0], ycpp[1],
+                    ycpp[2]);
+    AGREE(same);
+}
+
+void compare_estimates() {
+    odestep_stepper_d s;
+    AGREE(odestep_stepper_init_d(&s, &odestep_dop853_d) == ODESTEP_OK);
+    const odestep_system_d sys{lorenz_c, nullptr, 3};
+    double yc[3] = {1.0, 1.0, 1.0};
+    double e1[3];
+    double e2[3];
+    state3 ycpp{1.0, 1.0, 1.0};
+    state3 f1;
+    state3 f2;
+    AGREE(odestep_step_error_d(&s, &sys, yc, 0.0, 0.01, e1, e2) == ODESTEP_OK);
+    AGREE(odestep::dop853<state3>{}.step(lorenz_cpp, ycpp, 0.0, 0.01, f1, f2) == odestep::status::ok);
+    for (std::size_t i = 0; i < 3; ++i) AGREE(yc[i] == ycpp[i] && e1[i] == f1[i] && e2[i] == f2[i]);
+}
+
+using state2 = std::array<double, 2>;
+void springs_c(double, const double* x, double* a, void*) {
+    a[0] = -2.0 * x[0] + x[1];
+    a[1] = x[0] - 2.0 * x[1];
+}
+state2 springs_cpp(double t, const state2& x) {
+    state2 a;
+    springs_c(t, x.data(), a.data(), nullptr);
+    return a;
+}
+
+template <class Stepper>
+void compare_newton(const odestep_method_d* method, const char* name) {
+    odestep_stepper_d s;
+    AGREE(odestep_stepper_init_d(&s, method) == ODESTEP_OK);
+    const odestep_newton_d sys{springs_c, nullptr, 2};
+    double xc[2] = {1.0, 0.0};
+    double vc[2] = {0.0, 0.5};
+    state2 x{1.0, 0.0};
+    state2 v{0.0, 0.5};
+    AGREE(odestep_integrate_newton_d(&s, &sys, xc, vc, 0.0, 10.0, 0.05, nullptr, nullptr, nullptr) == ODESTEP_OK);
+    AGREE(odestep::integrate(Stepper{}, springs_cpp, x, v, 0.0, 10.0, 0.05).status == odestep::status::ok);
+    const bool same = xc[0] == x[0] && xc[1] == x[1] && vc[0] == v[0] && vc[1] == v[1];
+    if (!same) std::printf("%s: Newtonian runs differ\n", name);
+    AGREE(same);
+    // One step at a time through the C API (each evaluating afresh) is the C++ single step too.
+    double xs[2] = {1.0, 0.0};
+    double vs[2] = {0.0, 0.5};
+    state2 x1{1.0, 0.0};
+    state2 v1{0.0, 0.5};
+    AGREE(odestep_step_newton_d(&s, &sys, xs, vs, 0.0, 0.05) == ODESTEP_OK);
+    Stepper fresh{};
+    AGREE(fresh.step(springs_cpp, x1, v1, 0.0, 0.05) == odestep::status::ok);
+    AGREE(xs[0] == x1[0] && xs[1] == x1[1] && vs[0] == v1[0] && vs[1] == v1[1]);
+}
+
+}  // namespace
+
+int main() {
+    test_names();
+    compare_first_order<odestep::euler<state3>>(&odestep_euler_d, "euler");
+    compare_first_order<odestep::euler_richardson<state3>>(&odestep_euler_richardson_d, "euler_richardson");
+    compare_first_order<odestep::heun<state3>>(&odestep_heun_d, "heun");
+    compare_first_order<odestep::rk4<state3>>(&odestep_rk4_d, "rk4");
+    compare_first_order<odestep::bogacki_shampine32<state3>>(&odestep_bs32_d, "bs32");
+    compare_first_order<odestep::dormand_prince54<state3>>(&odestep_dp54_d, "dp54");
+    compare_first_order<odestep::dop853<state3>>(&odestep_dop853_d, "dop853");
+    compare_first_order<odestep::adams_bashforth4<state3>>(&odestep_ab4_d, "ab4");
+    compare_first_order<odestep::adams_bashforth_moulton4<state3>>(&odestep_abm4_d, "abm4");
+    compare_estimates();
+    compare_newton<odestep::euler_cromer<state2>>(&odestep_euler_cromer_d, "euler_cromer");
+    compare_newton<odestep::velocity_verlet<state2>>(&odestep_velocity_verlet_d, "velocity_verlet");
+    compare_newton<odestep::forest_ruth<state2>>(&odestep_forest_ruth_d, "forest_ruth");
+    std::printf("c api agreement: %d failed checks\n", failures);
+    return failures == 0 ? 0 : 1;
+}

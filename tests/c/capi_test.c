@@ -1,0 +1,454 @@
+/* The C API (include/odestep/odestep.h) tested from C99: closed forms, bad input and roll-back. Runs on the
+ * host and, cross-compiled, on the emulated Cortex-M cores (printf through semihosting there). */
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+#include "odestep/odestep.h"
+
+int check_failures = 0;
+
+/* ---- systems */
+
+/* y' = -k y (ctx: &k), every component alike. */
+static void decay_d(double t, const double* y, double* dydt, void* ctx) {
+    const double k = *(const double*)ctx;
+    size_t i;
+    (void)t;
+    for (i = 0; i < 3; ++i) dydt[i] = -k * y[i];
+}
+static void decay1_d(double t, const double* y, double* dydt, void* ctx) {
+    (void)t;
+    (void)ctx;
+    dydt[0] = -y[0];
+}
+static void decay1_f(float t, const float* y, float* dydt, void* ctx) {
+    (void)t;
+    (void)ctx;
+    dydt[0] = -y[0];
+}
+
+/* The harmonic oscillator x'' = -x, as a force of position alone. */
+static void spring_d(double t, const double* x, double* a, void* ctx) {
+    (void)t;
+    (void)ctx;
+    a[0] = -x[0];
+}
+static void spring_f(float t, const float* x, float* a, void* ctx) {
+    (void)t;
+    (void)ctx;
+    a[0] = -x[0];
+}
+
+/* y' = -y that returns NaN from the call numbered *ctx on (counting from 1); counts its calls. */
+typedef struct poison {
+    int calls;
+    int nan_from;
+} poison;
+static void poisoned_d(double t, const double* y, double* dydt, void* ctx) {
+    poison* p = (poison*)ctx;
+    (void)t;
+    ++p->calls;
+    dydt[0] = p->calls >= p->nan_from ? (double)NAN : -y[0];
+    dydt[1] = -y[1];
+}
+
+/* ---- closed forms */
+
+/* RK4 on y' = -y: one step multiplies y by R(-h) = 1 - h + h^2/2 - h^3/6 + h^4/24, the stability function
+ * of every 4-stage explicit method of order 4 (the degree-4 Taylor polynomial of e^z; Hairer & Wanner,
+ * Solving ODEs II, Sect. IV.2), so after m steps y = R(-h)^m y0, and y(t) = exp(-t) y0 to O(h^4). */
+static void test_rk4_decay(void) {
+    odestep_stepper_d s;
+    double k = 1.0;
+    const odestep_system_d sys = {decay_d, &k, 3};
+    double y[3] = {1.0, 2.0, -0.5};
+    const double h = 0.1;
+    const double r = 1.0 - h + h * h / 2.0 - h * h * h / 6.0 + h * h * h * h / 24.0;
+    double expected = 1.0;
+    int i;
+    CHECK(odestep_stepper_init_d(&s, &odestep_rk4_d) == ODESTEP_OK);
+    for (i = 0; i < 10; ++i) {
+        CHECK(odestep_step_d(&s, &sys, y, i * h, h) == ODESTEP_OK);
+        expected *= r;
+    }
+    CHECK_CLOSE(y[0], expected, 1e-15);
+    CHECK_CLOSE(y[1], 2.0 * expected, 2e-15);
+    CHECK_CLOSE(y[2], -0.5 * expected, 1e-15);
+    CHECK_CLOSE(y[0], exp(-1.0), 1e-6); /* global error ~ t h^4 / 120 e^-t = 3e-7 */
+}
+
+/* Euler on y' = -y: y_m = (1 - h)^m exactly in the arithmetic (each step is y - h y). */
+static void test_euler_decay(void) {
+    odestep_stepper_d s;
+    const odestep_system_d sys = {decay1_d, NULL, 1};
+    double y = 1.0;
+    double expected = 1.0;
+    int i;
+    CHECK(odestep_stepper_init_d(&s, &odestep_euler_d) == ODESTEP_OK);
+    for (i = 0; i < 20; ++i) {
+        CHECK(odestep_step_d(&s, &sys, &y, i * 0.05, 0.05) == ODESTEP_OK);
+        expected = expected + 0.05 * -expected;
+    }
+    CHECK(y == expected);
+}
+
+/* Heun and Euler-Richardson on y' = -y: both have the stability function 1 - h + h^2/2 (every 2-stage
+ * explicit method of order 2). */
+static void test_second_order_decay(void) {
+    const odestep_method_d* methods[2];
+    const odestep_system_d sys = {decay1_d, NULL, 1};
+    const double h = 0.125;
+    const double r = 1.0 - h + h * h / 2.0;
+    int m;
+    methods[0] = &odestep_heun_d;
+    methods[1] = &odestep_euler_richardson_d;
+    for (m = 0; m < 2; ++m) {
+        odestep_stepper_d s;
+        double y = 1.0;
+        int i;
+        CHECK(odestep_stepper_init_d(&s, methods[m]) == ODESTEP_OK);
+        for (i = 0; i < 8; ++i) CHECK(odestep_step_d(&s, &sys, &y, i * h, h) == ODESTEP_OK);
+        CHECK_CLOSE(y, pow(r, 8.0), 1e-15);
+    }
+}
+
+/* The embedded pairs: on y' = -y the estimate y - yhat is R(-h) - Rhat(-h) times y, a polynomial in h whose
+ * leading term is h^(p+1) times the difference of the two orders' Taylor coefficients; here it is enough
+ * that it is small, of the order the pair claims (|err| < C h^(phat+1)), non-zero, and that the estimating
+ * step returns the same y as the plain one. */
+static void test_error_estimates(void) {
+    const odestep_method_d* methods[4];
+    const double bound[4] = {0.02 * 0.02 * 1.0, 0.02 * 0.02 * 0.02, 1e-7, 1e-10};
+    const odestep_system_d sys = {decay1_d, NULL, 1};
+    int m;
+    methods[0] = &odestep_euler_richardson_d; /* embedded order 1: err ~ h^2 / 2 */
+    methods[1] = &odestep_bs32_d;             /* embedded order 2: err ~ h^3 */
+    methods[2] = &odestep_dp54_d;             /* embedded order 4 */
+    methods[3] = &odestep_dop853_d;           /* embedded orders 5 and 3 */
+    for (m = 0; m < 4; ++m) {
+        odestep_stepper_d s;
+        double y = 1.0;
+        double plain = 1.0;
+        double err = 0.0;
+        double err2 = 0.0;
+        odestep_method_info info;
+        CHECK(odestep_stepper_init_d(&s, methods[m]) == ODESTEP_OK);
+        CHECK(odestep_method_info_d(methods[m], &info) == ODESTEP_OK);
+        CHECK(info.error_estimates == (m == 3 ? 2 : 1));
+        CHECK(odestep_step_error_d(&s, &sys, &y, 0.0, 0.02, &err, m == 3 ? &err2 : NULL) == ODESTEP_OK);
+        CHECK(odestep_step_d(&s, &sys, &plain, 0.0, 0.02) == ODESTEP_OK);
+        CHECK(y == plain);
+        CHECK(err != 0.0);
+        CHECK(fabs(err) < bound[m]);
+        if (m == 3) CHECK(err2 != 0.0 && fabs(err2) < 1e-6);
+        CHECK_CLOSE(y, exp(-0.02), 2e-6); /* Euler-Richardson's local error: h^3 / 6 = 1.3e-6 */
+    }
+    {
+        odestep_stepper_d s;
+        double y = 1.0;
+        double err = 0.0;
+        double err2 = 0.0;
+        CHECK(odestep_stepper_init_d(&s, &odestep_rk4_d) == ODESTEP_OK);
+        CHECK(odestep_step_error_d(&s, &sys, &y, 0.0, 0.1, &err, NULL) == ODESTEP_INVALID_SETTING); /* none */
+        CHECK(odestep_stepper_init_d(&s, &odestep_dp54_d) == ODESTEP_OK);
+        CHECK(odestep_step_error_d(&s, &sys, &y, 0.0, 0.1, &err, &err2) == ODESTEP_INVALID_SETTING); /* one only */
+        CHECK(y == 1.0 && err == 0.0 && err2 == 0.0);
+    }
+}
+
+/* DOP853 over [0, 1] with the loop: y(1) = exp(-1) to far below RK4's error. */
+static void test_dop853_loop(void) {
+    odestep_stepper_d s;
+    const odestep_system_d sys = {decay1_d, NULL, 1};
+    double y = 1.0;
+    odestep_run_d run;
+    CHECK(odestep_stepper_init_d(&s, &odestep_dop853_d) == ODESTEP_OK);
+    CHECK(odestep_integrate_d(&s, &sys, &y, 0.0, 1.0, 0.1, NULL, NULL, &run) == ODESTEP_OK);
+    CHECK(run.t == 1.0 && run.steps == 10);
+    CHECK_CLOSE(y, exp(-1.0), 1e-13);
+}
+
+/* Velocity Verlet on x'' = -x: the step is a linear map that preserves v^2 + x^2 (1 - h^2/4) exactly (its
+ * matrix M satisfies M^T Q M = Q for Q = diag(1 - h^2/4, 1): the modified energy of the Stormer-Verlet
+ * method, Hairer, Lubich & Wanner, Geometric Numerical Integration, Sect. I.1.4), so over 10^3 steps that
+ * quantity moves by rounding only while the true energy x^2 + v^2 oscillates by O(h^2). The loop reuses the
+ * last acceleration: 1 evaluation a step (counted by the observer's step count and the method's info). */
+static void test_verlet_energy(void) {
+    odestep_stepper_d s;
+    const odestep_newton_d sys = {spring_d, NULL, 1};
+    double x = 1.0;
+    double v = 0.0;
+    const double h = 0.1;
+    odestep_run_d run;
+    CHECK(odestep_stepper_init_d(&s, &odestep_velocity_verlet_d) == ODESTEP_OK);
+    CHECK(odestep_integrate_newton_d(&s, &sys, &x, &v, 0.0, 100.0, h, NULL, NULL, &run) == ODESTEP_OK);
+    CHECK(run.steps == 1000);
+    CHECK_CLOSE(v * v + x * x * (1.0 - h * h / 4.0), 1.0 - h * h / 4.0, 1e-13);
+    CHECK(fabs(x * x + v * v - 1.0) > 1e-6); /* not the true energy: the test sees the difference */
+}
+
+/* Euler-Cromer (kick, then drift) on x'' = -x preserves v^2 + x^2 - h x v exactly (same argument). */
+static void test_euler_cromer_energy(void) {
+    odestep_stepper_d s;
+    const odestep_newton_d sys = {spring_d, NULL, 1};
+    double x = 1.0;
+    double v = 0.0;
+    const double h = 0.1;
+    int i;
+    CHECK(odestep_stepper_init_d(&s, &odestep_euler_cromer_d) == ODESTEP_OK);
+    for (i = 0; i < 1000; ++i) CHECK(odestep_step_newton_d(&s, &sys, &x, &v, i * h, h) == ODESTEP_OK);
+    CHECK_CLOSE(v * v + x * x - h * x * v, 1.0, 1e-13);
+}
+
+/* Forest-Ruth (order 4) on x'' = -x over one period: x(2 pi) = 1, v(2 pi) = 0 to O(h^4). */
+static void test_forest_ruth_period(void) {
+    odestep_stepper_d s;
+    const odestep_newton_d sys = {spring_d, NULL, 1};
+    double x = 1.0;
+    double v = 0.0;
+    const double two_pi = 6.283185307179586;
+    CHECK(odestep_stepper_init_d(&s, &odestep_forest_ruth_d) == ODESTEP_OK);
+    CHECK(odestep_integrate_newton_d(&s, &sys, &x, &v, 0.0, two_pi, two_pi / 100.0, NULL, NULL, NULL) == ODESTEP_OK);
+    CHECK_CLOSE(x, 1.0, 1e-5);
+    CHECK_CLOSE(v, 0.0, 1e-5);
+}
+
+/* AB4 and ABM4 over [0, 2] with h = 0.05 (40 steps, the first three by RK4): exp(-2) to O(h^4). A single
+ * step off the history's grid is refused, and the loop refuses a run whose last step would be shortened. */
+static void test_adams(void) {
+    const odestep_method_d* methods[2];
+    const odestep_system_d sys = {decay1_d, NULL, 1};
+    int m;
+    methods[0] = &odestep_ab4_d;
+    methods[1] = &odestep_abm4_d;
+    for (m = 0; m < 2; ++m) {
+        odestep_stepper_d s;
+        double y = 1.0;
+        odestep_run_d run;
+        int i;
+        CHECK(odestep_stepper_init_d(&s, methods[m]) == ODESTEP_OK);
+        CHECK(odestep_integrate_d(&s, &sys, &y, 0.0, 2.0, 0.05, NULL, NULL, &run) == ODESTEP_OK);
+        CHECK(run.steps == 40);
+        CHECK_CLOSE(y, exp(-2.0), 2e-6);
+
+        y = 1.0;
+        CHECK(odestep_integrate_d(&s, &sys, &y, 0.0, 1.01, 0.05, NULL, NULL, &run) == ODESTEP_STEP_MISMATCH);
+        CHECK(y == 1.0 && run.steps == 0 && run.t == 0.0);
+
+        odestep_stepper_reset_d(&s);
+        for (i = 0; i < 5; ++i) CHECK(odestep_step_d(&s, &sys, &y, i * 0.05, 0.05) == ODESTEP_OK);
+        {
+            const double kept = y;
+            CHECK(odestep_step_d(&s, &sys, &y, 5 * 0.05, 0.1) == ODESTEP_STEP_MISMATCH); /* another dt */
+            CHECK(odestep_step_d(&s, &sys, &y, 0.0, 0.05) == ODESTEP_STEP_MISMATCH);     /* another t */
+            CHECK(y == kept);
+            odestep_stepper_reset_d(&s);
+            CHECK(odestep_step_d(&s, &sys, &y, 0.0, 0.1) == ODESTEP_OK); /* a new history */
+        }
+    }
+}
+
+/* The observer sees the initial state and every step, at t0 + i dt. */
+typedef struct seen {
+    int calls;
+    double last_t;
+    int times_right;
+} seen;
+static void observe_d(double t, const double* y, void* ctx) {
+    seen* s = (seen*)ctx;
+    if (t == 0.0 + s->calls * 0.25 && y[0] > 0.0) ++s->times_right;
+    ++s->calls;
+    s->last_t = t;
+}
+static void test_observer(void) {
+    odestep_stepper_d s;
+    const odestep_system_d sys = {decay1_d, NULL, 1};
+    double y = 1.0;
+    seen count = {0, -1.0, 0};
+    CHECK(odestep_stepper_init_d(&s, &odestep_rk4_d) == ODESTEP_OK);
+    CHECK(odestep_integrate_d(&s, &sys, &y, 0.0, 2.0, 0.25, observe_d, &count, NULL) == ODESTEP_OK);
+    CHECK(count.calls == 9);
+    CHECK(count.times_right == 9);
+    CHECK(count.last_t == 2.0);
+}
+
+/* ---- bad input: a distinct status, nothing touched */
+
+static void test_bad_input(void) {
+    odestep_stepper_d s;
+    odestep_stepper_d newton;
+    double k = 1.0;
+    odestep_system_d sys = {decay_d, &k, 3};
+    const odestep_newton_d spring = {spring_d, NULL, 1};
+    double y[3] = {1.0, 2.0, 3.0};
+    double x = 1.0;
+    double v = 0.0;
+    odestep_run_d run;
+    CHECK(odestep_stepper_init_d(&s, &odestep_rk4_d) == ODESTEP_OK);
+    CHECK(odestep_stepper_init_d(&newton, &odestep_velocity_verlet_d) == ODESTEP_OK);
+
+    CHECK(odestep_step_d(&s, &sys, y, 0.0, 0.0) == ODESTEP_INVALID_STEP);
+    CHECK(odestep_step_d(&s, &sys, y, 0.0, NAN) == ODESTEP_INVALID_STEP);
+    CHECK(odestep_step_d(&s, &sys, y, 0.0, INFINITY) == ODESTEP_INVALID_STEP);
+    CHECK(odestep_step_d(&s, &sys, y, NAN, 0.1) == ODESTEP_INVALID_TIME);
+    CHECK(odestep_integrate_d(&s, &sys, y, 0.0, 1.0, 0.0, NULL, NULL, &run) == ODESTEP_INVALID_STEP);
+    CHECK(odestep_integrate_d(&s, &sys, y, 0.0, 1.0, NAN, NULL, NULL, &run) == ODESTEP_INVALID_STEP);
+    CHECK(odestep_integrate_d(&s, &sys, y, 0.0, 1.0, -0.1, NULL, NULL, &run) == ODESTEP_WRONG_DIRECTION);
+    CHECK(run.steps == 0 && run.t == 0.0);
+    CHECK(odestep_integrate_d(&s, &sys, y, NAN, 1.0, 0.1, NULL, NULL, &run) == ODESTEP_INVALID_TIME);
+    CHECK(run.steps == 0 && isnan(run.t)); /* the time of y is the t0 given */
+    CHECK(y[0] == 1.0 && y[1] == 2.0 && y[2] == 3.0);
+
+    sys.n = (size_t)ODESTEP_C_MAX_STATES + 1;
+    CHECK(odestep_step_d(&s, &sys, y, 0.0, 0.1) == ODESTEP_INVALID_SETTING);
+    CHECK(odestep_integrate_d(&s, &sys, y, 0.0, 1.0, 0.1, NULL, NULL, NULL) == ODESTEP_INVALID_SETTING);
+    sys.n = 0;
+    CHECK(odestep_step_d(&s, &sys, y, 0.0, 0.1) == ODESTEP_INVALID_SETTING);
+    sys.n = 3;
+    sys.f = NULL;
+    CHECK(odestep_step_d(&s, &sys, y, 0.0, 0.1) == ODESTEP_INVALID_SETTING);
+    sys.f = decay_d;
+    CHECK(odestep_step_d(NULL, &sys, y, 0.0, 0.1) == ODESTEP_INVALID_SETTING);
+    CHECK(odestep_step_d(&s, NULL, y, 0.0, 0.1) == ODESTEP_INVALID_SETTING);
+    CHECK(odestep_step_d(&s, &sys, NULL, 0.0, 0.1) == ODESTEP_INVALID_SETTING);
+    CHECK(odestep_stepper_init_d(&s, NULL) == ODESTEP_INVALID_SETTING);
+    CHECK(odestep_stepper_init_d(&s, &odestep_rk4_d) == ODESTEP_OK);
+    /* the other kind of system */
+    CHECK(odestep_step_d(&newton, &sys, y, 0.0, 0.1) == ODESTEP_INVALID_SETTING);
+    CHECK(odestep_step_newton_d(&s, &spring, &x, &v, 0.0, 0.1) == ODESTEP_INVALID_SETTING);
+    CHECK(odestep_integrate_newton_d(&s, &spring, &x, &v, 0.0, 1.0, 0.1, NULL, NULL, NULL) == ODESTEP_INVALID_SETTING);
+    CHECK(odestep_step_newton_d(&newton, &spring, &x, &v, 0.0, 0.0) == ODESTEP_INVALID_STEP);
+    CHECK(y[0] == 1.0 && y[1] == 2.0 && y[2] == 3.0 && x == 1.0 && v == 0.0);
+    /* and then it works */
+    CHECK(odestep_step_d(&s, &sys, y, 0.0, 0.1) == ODESTEP_OK);
+    CHECK(y[0] < 1.0);
+}
+
+/* ---- NaN: the step is rolled back, the loop stops at the last good state */
+
+static void test_nan_roll_back(void) {
+    odestep_stepper_d s;
+    poison p = {0, 2}; /* the second evaluation (a stage of the first step) is NaN */
+    const odestep_system_d sys = {poisoned_d, &p, 2};
+    double y[2] = {1.0, 3.0};
+    odestep_run_d run;
+    CHECK(odestep_stepper_init_d(&s, &odestep_rk4_d) == ODESTEP_OK);
+    CHECK(odestep_step_d(&s, &sys, y, 0.0, 0.1) == ODESTEP_NON_FINITE);
+    CHECK(y[0] == 1.0 && y[1] == 3.0);
+
+    /* In the loop: steps 1 to 4 are good (4 evaluations each), the 5th step's first evaluation is NaN. */
+    p.calls = 0;
+    p.nan_from = 17;
+    CHECK(odestep_integrate_d(&s, &sys, y, 0.0, 1.0, 0.1, NULL, NULL, &run) == ODESTEP_NON_FINITE);
+    CHECK(run.steps == 4);
+    CHECK_CLOSE(run.t, 0.4, 1e-15);
+    {
+        /* the same four steps, by hand */
+        double z[2] = {1.0, 3.0};
+        int i;
+        p.calls = 0;
+        p.nan_from = 1000;
+        for (i = 0; i < 4; ++i) CHECK(odestep_step_d(&s, &sys, z, i * 0.1, 0.1) == ODESTEP_OK);
+        CHECK(y[0] == z[0] && y[1] == z[1]);
+    }
+}
+
+/* ---- n below the maximum: only n values of the caller's arrays are read or written */
+
+typedef struct guarded {
+    double y[2];
+    double guard[ODESTEP_C_MAX_STATES];
+} guarded;
+static void swing_d(double t, const double* y, double* dydt, void* ctx) {
+    (void)t;
+    (void)ctx;
+    dydt[0] = y[1];
+    dydt[1] = -y[0];
+}
+static void test_n_below_max(void) {
+    odestep_stepper_d s;
+    const odestep_system_d sys = {swing_d, NULL, 2};
+    guarded g;
+    double err[2 + ODESTEP_C_MAX_STATES];
+    size_t i;
+    g.y[0] = 1.0;
+    g.y[1] = 0.0;
+    for (i = 0; i < ODESTEP_C_MAX_STATES; ++i) {
+        g.guard[i] = NAN; /* a NaN past n would fail the step if the library read it */
+        err[2 + i] = 42.0;
+    }
+    CHECK(odestep_stepper_init_d(&s, &odestep_dp54_d) == ODESTEP_OK);
+    CHECK(odestep_step_error_d(&s, &sys, g.y, 0.0, 0.1, err, NULL) == ODESTEP_OK);
+    for (i = 0; i < ODESTEP_C_MAX_STATES; ++i) CHECK(isnan(g.guard[i]) && err[2 + i] == 42.0);
+    CHECK_CLOSE(g.y[0], cos(0.1), 1e-9);
+    CHECK_CLOSE(g.y[1], -sin(0.1), 1e-9);
+}
+
+/* ---- float */
+
+/* RK4 in float on y' = -y over [0, 1]: exp(-1) to float's rounding (the method's error is 3e-7, about
+ * 2 ulp at 0.37). Velocity Verlet in float keeps its modified energy to float rounding. */
+static void test_float(void) {
+    odestep_stepper_f s;
+    const odestep_system_f sys = {decay1_f, NULL, 1};
+    const odestep_newton_f spring = {spring_f, NULL, 1};
+    float y = 1.0f;
+    float x = 1.0f;
+    float v = 0.0f;
+    const float h = 0.125f;
+    odestep_run_f run;
+    odestep_method_info info;
+    CHECK(odestep_stepper_init_f(&s, &odestep_rk4_f) == ODESTEP_OK);
+    CHECK(odestep_integrate_f(&s, &sys, &y, 0.0f, 1.0f, 0.1f, NULL, NULL, &run) == ODESTEP_OK);
+    CHECK(run.t == 1.0f && run.steps == 10);
+    CHECK_CLOSE(y, exp(-1.0), 2e-6);
+    CHECK(odestep_step_f(&s, &sys, &y, 0.0f, 0.0f) == ODESTEP_INVALID_STEP);
+    CHECK(odestep_stepper_init_f(&s, &odestep_velocity_verlet_f) == ODESTEP_OK);
+    CHECK(odestep_integrate_newton_f(&s, &spring, &x, &v, 0.0f, 100.0f, h, NULL, NULL, &run) == ODESTEP_OK);
+    CHECK(run.steps == 800);
+    CHECK_CLOSE(v * v + x * x * (1.0f - h * h / 4.0f), 1.0f - h * h / 4.0f, 1e-5);
+    CHECK(odestep_method_info_f(&odestep_forest_ruth_f, &info) == ODESTEP_OK);
+    CHECK(info.order == 4 && info.newtonian == 1 && strcmp(info.name, "forest_ruth") == 0);
+}
+
+/* ---- the rest of the interface */
+
+static void test_names_and_info(void) {
+    odestep_method_info info;
+    CHECK(strcmp(odestep_status_name(ODESTEP_OK), "ok") == 0);
+    CHECK(strcmp(odestep_status_name(ODESTEP_NON_FINITE), "non_finite") == 0);
+    CHECK(strcmp(odestep_status_name(ODESTEP_INVALID_SETTING), "invalid_setting") == 0);
+    CHECK(strcmp(odestep_status_name((odestep_status)99), "unknown") == 0);
+    CHECK(odestep_max_states() == ODESTEP_C_MAX_STATES);
+    CHECK(odestep_max_events() == ODESTEP_C_MAX_EVENTS);
+    CHECK(odestep_method_info_d(&odestep_rk4_d, &info) == ODESTEP_OK);
+    CHECK(info.order == 4 && info.error_estimates == 0 && info.newtonian == 0 && info.rhs_evals_per_step == 4);
+    CHECK(odestep_method_info_d(&odestep_abm4_d, &info) == ODESTEP_OK);
+    CHECK(info.order == 4 && info.uniform_steps == 1);
+    CHECK(odestep_method_info_d(&odestep_dop853_d, &info) == ODESTEP_OK);
+    CHECK(info.order == 8 && info.error_estimates == 2);
+    CHECK(odestep_method_info_d(&odestep_velocity_verlet_d, &info) == ODESTEP_OK);
+    CHECK(info.order == 2 && info.newtonian == 1);
+    CHECK(odestep_method_info_d(NULL, &info) == ODESTEP_INVALID_SETTING);
+}
+
+int main(void) {
+    test_rk4_decay();
+    test_euler_decay();
+    test_second_order_decay();
+    test_error_estimates();
+    test_dop853_loop();
+    test_verlet_energy();
+    test_euler_cromer_energy();
+    test_forest_ruth_period();
+    test_adams();
+    test_observer();
+    test_bad_input();
+    test_nan_roll_back();
+    test_n_below_max();
+    test_float();
+    test_names_and_info();
+    printf("c api tests: %d failed checks\n", check_failures);
+    return check_failures == 0 ? 0 : 1;
+}
