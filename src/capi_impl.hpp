@@ -101,6 +101,19 @@ struct method_ops {
     status (*step_newton)(void* storage, const c_accel<T>& a, state<T>& x, state<T>& v, T t, T dt, bool kept);
 };
 
+}  // namespace odestep::capi
+
+/// The method objects the header declares opaque: a method's traits and function pointers.
+struct odestep_method_d {
+    odestep::capi::method_ops<double> ops;  ///< what the C functions call
+};
+/// The float method object.
+struct odestep_method_f {
+    odestep::capi::method_ops<float> ops;  ///< what the C functions call
+};
+
+namespace odestep::capi {
+
 template <class S, class = void>
 struct estimates_of : std::integral_constant<int, 0> {};
 template <class S>
@@ -175,7 +188,9 @@ template <class T>
 using stepper_t = typename c_types<T>::stepper;
 
 template <class T>
-const method_ops<T>* ops(const stepper_t<T>* s) noexcept;  // defined per precision (the method struct)
+const method_ops<T>* ops(const stepper_t<T>* s) noexcept {
+    return s->method != nullptr ? &s->method->ops : nullptr;
+}
 
 template <class T>
 bool size_ok(std::size_t n) noexcept {

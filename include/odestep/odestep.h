@@ -216,6 +216,109 @@ odestep_status odestep_integrate_newton_d(odestep_stepper_d* stepper, const odes
                                           double* v, double t0, double t1, double dt, odestep_newton_observer_d observe,
                                           void* observer_ctx, odestep_run_d* run);
 
+/* ---- events (the per-tick event loop; first-order systems) ------------------------------------------- */
+
+/// How many firings one tick lists (odestep_tick_d.firings); `fired` counts them all.
+#define ODESTEP_C_TICK_FIRINGS 8
+
+/// Which sign changes of an event function g count: rising (- to +), falling (+ to -) or either. Reaching
+/// exactly zero from the side the direction starts on counts too; leaving zero does not.
+typedef enum odestep_direction {
+    ODESTEP_RISING = 0,   ///< - to +
+    ODESTEP_FALLING = 1,  ///< + to -
+    ODESTEP_EITHER = 2    ///< both
+} odestep_direction;
+
+/// What an event's action returns: go on, or stop the tick at the event (ODESTEP_STOPPED_BY_EVENT).
+typedef enum odestep_event_result {
+    ODESTEP_PROCEED = 0,  ///< go on integrating
+    ODESTEP_STOP = 1      ///< stop at the event
+} odestep_event_result;
+
+/// Settings of the event loop, for all its events; zero-initialised ({0}) means the C++ defaults, with
+/// max_firings_per_step 0 read as its default 8.
+typedef struct odestep_event_limits {
+    size_t max_iterations;        ///< cap on the root finder's re-steps per location; 0: its own worst case
+    size_t max_firings_per_step;  ///< firings allowed in one tick; one more is ODESTEP_EVENT_LIMIT; 0: 8
+    size_t probes;                ///< interior probes per tick (to see a g that crosses twice in a tick)
+} odestep_event_limits;
+
+/// An event function g(t, y); an event fires where g crosses zero in its direction.
+typedef double (*odestep_event_fn_d)(double t, const double* y, void* ctx);
+/// An event's action: may change y[0 .. n-1] (a bounce) and returns ODESTEP_PROCEED or ODESTEP_STOP.
+typedef odestep_event_result (*odestep_event_action_d)(double t, double* y, void* ctx);
+
+/// One event of the loop: its function, direction, action and settings. Zero-initialise it and set g and
+/// direction: the other fields' zero is the default.
+typedef struct odestep_event_d {
+    odestep_event_fn_d g;           ///< the event function, not null
+    odestep_direction direction;    ///< which crossings count
+    odestep_event_action_d action;  ///< null: a terminal event (the tick stops at it)
+    void* ctx;                      ///< handed to g and to action unchanged
+    double tolerance;               ///< width of the time bracket it is located to; 0: a few ULPs of t
+    double band;                    ///< after firing, re-arms once |g| > band has been seen; 0: none
+    double dead_time;               ///< least time between two firings; 0: none
+    size_t max_firings;             ///< after this many firings the event stays quiet; 0: no limit
+} odestep_event_d;
+
+/// One firing inside a tick: which event (its index in the array given to start) and when.
+typedef struct odestep_event_firing_d {
+    size_t event;  ///< index of the event
+    double t;      ///< time of the firing
+} odestep_event_firing_d;
+
+/// What one tick reports besides its status.
+typedef struct odestep_tick_d {
+    double t;                                                ///< the time of y now (the tick's end unless it stopped)
+    size_t fired;                                            ///< firings inside the tick
+    size_t event;                                            ///< the event that stopped the tick, or (size_t)-1
+    odestep_event_firing_d firings[ODESTEP_C_TICK_FIRINGS];  ///< the first firings, in order
+} odestep_tick_d;
+
+/// The event loop's storage, caller-owned: a stepper, a copy of the events, the clock. Do not copy it once
+/// started. A loop that is zero-initialised or not started refuses ticks (ODESTEP_INVALID_TIME).
+typedef struct odestep_event_loop_d {
+    size_t n;  ///< the state size, set by a successful start (0 before)
+    union {
+        unsigned char bytes[sizeof(odestep_stepper_d) +
+                            ODESTEP_C_MAX_EVENTS * (12 * sizeof(void*) + 8 * sizeof(double)) +
+                            ODESTEP_C_TICK_FIRINGS * (sizeof(size_t) + sizeof(double)) + 8 * sizeof(double) +
+                            8 * sizeof(void*)];  ///< the C++ event_stepper
+        double align_scalar;                     ///< alignment only
+        void* align_pointer;                     ///< alignment only
+        uint64_t align_integer;                  ///< alignment only
+    } storage;                                   ///< not to be touched
+} odestep_event_loop_d;
+
+/// Starts a per-tick event loop: `method` steps `system` with ticks of dt from t0, watching `events[0 ..
+/// count-1]` (copied into the loop; count 1 to ODESTEP_C_MAX_EVENTS; events located at the same time fire
+/// in array order), with `limits` (null: the defaults). Reads every g at (t0, y): an event whose g is zero
+/// there does not fire at t0. ODESTEP_INVALID_SETTING for a null or out-of-range argument (a null g, a
+/// direction not one of the three), ODESTEP_INVALID_TIME / ODESTEP_INVALID_STEP for t0 / dt,
+/// ODESTEP_INVALID_TOLERANCE for a negative or non-finite tolerance, band or dead time,
+/// ODESTEP_NON_FINITE_EVENT for a g that is not finite at the start.
+odestep_status odestep_event_loop_start_d(odestep_event_loop_d* loop, const odestep_method_d* method,
+                                          const odestep_event_d* events, size_t count,
+                                          const odestep_event_limits* limits, const odestep_system_d* system,
+                                          const double* y, double t0, double dt);
+
+/// One tick: y from t0 + k dt to t0 + (k+1) dt (after a tick that stopped early, from there to that grid
+/// time), every crossing inside located, its action run on the state at that time. `tick` (may be null)
+/// gets the time and the firings. The status is ODESTEP_OK, ODESTEP_STOPPED_BY_EVENT, ODESTEP_EVENT_LIMIT
+/// or an error; y is always the state at tick->t. system->n must be the n of start.
+odestep_status odestep_event_loop_tick_d(odestep_event_loop_d* loop, const odestep_system_d* system, double* y,
+                                         odestep_tick_d* tick);
+
+/// After the caller changed y between ticks: re-reads every g at the current time (and empties the
+/// stepper's history); firing counts are kept.
+odestep_status odestep_event_loop_rearm_d(odestep_event_loop_d* loop, const double* y);
+
+/// The time of the state: t0 + k dt, or where a tick stopped (NaN before start).
+double odestep_event_loop_time_d(const odestep_event_loop_d* loop);
+
+/// Firings of event i since start (0 for i out of range or before start).
+size_t odestep_event_loop_firings_d(const odestep_event_loop_d* loop, size_t i);
+
 /* ---- float: the same API in single precision (see the double functions for each one's contract) ------- */
 
 /// The right-hand side of y' = f(t, y) in float.
@@ -305,6 +408,82 @@ odestep_status odestep_integrate_f(odestep_stepper_f* stepper, const odestep_sys
 odestep_status odestep_integrate_newton_f(odestep_stepper_f* stepper, const odestep_newton_f* system, float* x,
                                           float* v, float t0, float t1, float dt, odestep_newton_observer_f observe,
                                           void* observer_ctx, odestep_run_f* run);
+
+/// An event function in float (see odestep_event_fn_d).
+typedef float (*odestep_event_fn_f)(float t, const float* y, void* ctx);
+/// An event's action: may change y[0 .. n-1] (a bounce) and returns ODESTEP_PROCEED or ODESTEP_STOP.
+typedef odestep_event_result (*odestep_event_action_f)(float t, float* y, void* ctx);
+
+/// One event of the loop: its function, direction, action and settings. Zero-initialise it and set g and
+/// direction: the other fields' zero is the default.
+typedef struct odestep_event_f {
+    odestep_event_fn_f g;           ///< the event function, not null
+    odestep_direction direction;    ///< which crossings count
+    odestep_event_action_f action;  ///< null: a terminal event (the tick stops at it)
+    void* ctx;                      ///< handed to g and to action unchanged
+    float tolerance;                ///< width of the time bracket it is located to; 0: a few ULPs of t
+    float band;                     ///< after firing, re-arms once |g| > band has been seen; 0: none
+    float dead_time;                ///< least time between two firings; 0: none
+    size_t max_firings;             ///< after this many firings the event stays quiet; 0: no limit
+} odestep_event_f;
+
+/// One firing inside a tick: which event (its index in the array given to start) and when.
+typedef struct odestep_event_firing_f {
+    size_t event;  ///< index of the event
+    float t;       ///< time of the firing
+} odestep_event_firing_f;
+
+/// What one tick reports besides its status.
+typedef struct odestep_tick_f {
+    float t;                                                 ///< the time of y now (the tick's end unless it stopped)
+    size_t fired;                                            ///< firings inside the tick
+    size_t event;                                            ///< the event that stopped the tick, or (size_t)-1
+    odestep_event_firing_f firings[ODESTEP_C_TICK_FIRINGS];  ///< the first firings, in order
+} odestep_tick_f;
+
+/// The event loop's storage, caller-owned: a stepper, a copy of the events, the clock. Do not copy it once
+/// started. A loop that is zero-initialised or not started refuses ticks (ODESTEP_INVALID_TIME).
+typedef struct odestep_event_loop_f {
+    size_t n;  ///< the state size, set by a successful start (0 before)
+    union {
+        unsigned char bytes[sizeof(odestep_stepper_f) +
+                            ODESTEP_C_MAX_EVENTS * (12 * sizeof(void*) + 8 * sizeof(float)) +
+                            ODESTEP_C_TICK_FIRINGS * (sizeof(size_t) + sizeof(float)) + 8 * sizeof(float) +
+                            8 * sizeof(void*)];  ///< the C++ event_stepper
+        float align_scalar;                      ///< alignment only
+        void* align_pointer;                     ///< alignment only
+        uint64_t align_integer;                  ///< alignment only
+    } storage;                                   ///< not to be touched
+} odestep_event_loop_f;
+
+/// Starts a per-tick event loop: `method` steps `system` with ticks of dt from t0, watching `events[0 ..
+/// count-1]` (copied into the loop; count 1 to ODESTEP_C_MAX_EVENTS; events located at the same time fire
+/// in array order), with `limits` (null: the defaults). Reads every g at (t0, y): an event whose g is zero
+/// there does not fire at t0. ODESTEP_INVALID_SETTING for a null or out-of-range argument (a null g, a
+/// direction not one of the three), ODESTEP_INVALID_TIME / ODESTEP_INVALID_STEP for t0 / dt,
+/// ODESTEP_INVALID_TOLERANCE for a negative or non-finite tolerance, band or dead time,
+/// ODESTEP_NON_FINITE_EVENT for a g that is not finite at the start.
+odestep_status odestep_event_loop_start_f(odestep_event_loop_f* loop, const odestep_method_f* method,
+                                          const odestep_event_f* events, size_t count,
+                                          const odestep_event_limits* limits, const odestep_system_f* system,
+                                          const float* y, float t0, float dt);
+
+/// One tick: y from t0 + k dt to t0 + (k+1) dt (after a tick that stopped early, from there to that grid
+/// time), every crossing inside located, its action run on the state at that time. `tick` (may be null)
+/// gets the time and the firings. The status is ODESTEP_OK, ODESTEP_STOPPED_BY_EVENT, ODESTEP_EVENT_LIMIT
+/// or an error; y is always the state at tick->t. system->n must be the n of start.
+odestep_status odestep_event_loop_tick_f(odestep_event_loop_f* loop, const odestep_system_f* system, float* y,
+                                         odestep_tick_f* tick);
+
+/// After the caller changed y between ticks: re-reads every g at the current time (and empties the
+/// stepper's history); firing counts are kept.
+odestep_status odestep_event_loop_rearm_f(odestep_event_loop_f* loop, const float* y);
+
+/// The time of the state: t0 + k dt, or where a tick stopped (NaN before start).
+float odestep_event_loop_time_f(const odestep_event_loop_f* loop);
+
+/// Firings of event i since start (0 for i out of range or before start).
+size_t odestep_event_loop_firings_f(const odestep_event_loop_f* loop, size_t i);
 
 #ifdef __cplusplus
 }

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "odestep/events.hpp"
 #include "odestep/explicit_rk.hpp"
 #include "odestep/integrate.hpp"
 #include "odestep/multistep.hpp"
@@ -133,6 +134,51 @@ void compare_newton(const odestep_method_d* method, const char* name) {
     AGREE(xs[0] == x1[0] && xs[1] == x1[1] && vs[0] == v1[0] && vs[1] == v1[1]);
 }
 
+// The event loop: a bouncing ball ticked through the C API and through odestep::event_stepper, the same
+// firing times and states bit for bit (the C loop's unused event slots never fire and change nothing).
+void ball_c(double, const double* y, double* dydt, void*) {
+    dydt[0] = y[1];
+    dydt[1] = -9.81;
+}
+double height_c(double, const double* y, void*) { return y[0]; }
+odestep_event_result bounce_c(double, double* y, void*) {
+    y[1] = -0.8 * y[1];
+    return ODESTEP_PROCEED;
+}
+void compare_events() {
+    using state = std::array<double, 2>;
+    odestep_event_loop_d loop;
+    const odestep_system_d sys{ball_c, nullptr, 2};
+    odestep_event_d ground{};
+    ground.g = height_c;
+    ground.direction = ODESTEP_FALLING;
+    ground.action = bounce_c;
+    double yc[2] = {1.0, 0.0};
+    AGREE(odestep_event_loop_start_d(&loop, &odestep_rk4_d, &ground, 1, nullptr, &sys, yc, 0.0, 0.01) == ODESTEP_OK);
+
+    auto f = [](double t, const state& y, state& dydt) { ball_c(t, y.data(), dydt.data(), nullptr); };
+    auto g = [](double, const state& y) { return y[0]; };
+    auto bounce = [](double, state& y) {
+        y[1] = -0.8 * y[1];
+        return odestep::event_result::proceed;
+    };
+    auto cpp = odestep::make_event_stepper(
+        odestep::rk4<state>{}, odestep::watch(odestep::make_event<state>(g, odestep::direction::falling, bounce)));
+    state y{1.0, 0.0};
+    AGREE(cpp.start(0.0, 0.01, y) == odestep::status::ok);
+    int firings = 0;
+    for (int k = 0; k < 300; ++k) {
+        odestep_tick_d tick;
+        const odestep_status sc = odestep_event_loop_tick_d(&loop, &sys, yc, &tick);
+        const auto r = cpp.tick(f, y);
+        AGREE(static_cast<int>(sc) == static_cast<int>(r.status) && tick.t == r.t && tick.fired == r.fired);
+        for (std::size_t i = 0; i < tick.fired && i < r.fired; ++i) AGREE(tick.firings[i].t == r.firings[i].t);
+        AGREE(yc[0] == y[0] && yc[1] == y[1]);
+        firings += static_cast<int>(r.fired);
+    }
+    AGREE(firings >= 4);
+}
+
 }  // namespace
 
 int main() {
@@ -147,6 +193,7 @@ int main() {
     compare_first_order<odestep::adams_bashforth4<state3>>(&odestep_ab4_d, "ab4");
     compare_first_order<odestep::adams_bashforth_moulton4<state3>>(&odestep_abm4_d, "abm4");
     compare_estimates();
+    compare_events();
     compare_newton<odestep::euler_cromer<state2>>(&odestep_euler_cromer_d, "euler_cromer");
     compare_newton<odestep::velocity_verlet<state2>>(&odestep_velocity_verlet_d, "velocity_verlet");
     compare_newton<odestep::forest_ruth<state2>>(&odestep_forest_ruth_d, "forest_ruth");

@@ -433,6 +433,179 @@ static void test_names_and_info(void) {
     CHECK(odestep_method_info_d(NULL, &info) == ODESTEP_INVALID_SETTING);
 }
 
+/* ---- the per-tick event loop */
+
+/* A ball dropped from h0 = 1 m under g = 9.81 m/s^2, bouncing with restitution e = 0.8: y = (height,
+ * velocity). Between bounces the motion is a parabola, which RK4 integrates exactly (y'' is constant: the
+ * method is exact on polynomials of degree <= 4), so the bounce times are the closed form's to the root
+ * finder's tolerance: t1 = sqrt(2 h0 / g), impact speed v1 = g t1, and bounce k+1 comes 2 e^k v1 / g after
+ * bounce k. */
+static const double gravity = 9.81;
+static void ball_d(double t, const double* y, double* dydt, void* ctx) {
+    (void)t;
+    (void)ctx;
+    dydt[0] = y[1];
+    dydt[1] = -gravity;
+}
+static double height_d(double t, const double* y, void* ctx) {
+    (void)t;
+    (void)ctx;
+    return y[0];
+}
+static double height_minus_half_d(double t, const double* y, void* ctx) {
+    (void)t;
+    (void)ctx;
+    return y[0] - 0.5;
+}
+static odestep_event_result bounce_d(double t, double* y, void* ctx) {
+    int* bounces = (int*)ctx;
+    (void)t;
+    y[1] = -0.8 * y[1];
+    ++*bounces;
+    return ODESTEP_PROCEED;
+}
+static double nan_g_d(double t, const double* y, void* ctx) {
+    (void)t;
+    (void)y;
+    (void)ctx;
+    return (double)NAN;
+}
+
+static void test_bouncing_ball(void) {
+    odestep_event_loop_d loop;
+    const odestep_system_d sys = {ball_d, NULL, 2};
+    odestep_event_d ground;
+    int bounces = 0;
+    double y[2] = {1.0, 0.0};
+    const double t1 = sqrt(2.0 * 1.0 / gravity);
+    const double v1 = gravity * t1;
+    double expected[3];
+    int found = 0;
+    int k;
+    expected[0] = t1;
+    expected[1] = t1 + 2.0 * 0.8 * v1 / gravity;
+    expected[2] = expected[1] + 2.0 * 0.64 * v1 / gravity;
+    memset(&ground, 0, sizeof ground);
+    ground.g = height_d;
+    ground.direction = ODESTEP_FALLING;
+    ground.action = bounce_d;
+    ground.ctx = &bounces;
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, &ground, 1, NULL, &sys, y, 0.0, 0.01) == ODESTEP_OK);
+    for (k = 0; k < 200; ++k) { /* 2 s of 10 ms ticks: three bounces (at 0.45, 1.17 and 1.75 s) */
+        odestep_tick_d tick;
+        CHECK(odestep_event_loop_tick_d(&loop, &sys, y, &tick) == ODESTEP_OK);
+        CHECK_CLOSE(tick.t, (k + 1) * 0.01, 1e-12);
+        if (tick.fired > 0 && found < 3) {
+            CHECK(tick.fired == 1 && tick.firings[0].event == 0);
+            CHECK_CLOSE(tick.firings[0].t, expected[found], 1e-9);
+            ++found;
+        }
+    }
+    CHECK(found == 3 && bounces == 3);
+    CHECK(odestep_event_loop_firings_d(&loop, 0) == 3);
+    CHECK_CLOSE(odestep_event_loop_time_d(&loop), 2.0, 1e-12);
+}
+
+/* A terminal event (no action): the tick stops where the height is 0.5, t = sqrt(2 (1 - 0.5) / g), and y is
+ * the state then; the next tick goes on to the grid time. A second event in the array that never fires
+ * (rising) does not disturb it. */
+static void test_terminal_event(void) {
+    odestep_event_loop_d loop;
+    const odestep_system_d sys = {ball_d, NULL, 2};
+    odestep_event_d events[2];
+    double y[2] = {1.0, 0.0};
+    const double t_half = sqrt(2.0 * 0.5 / gravity);
+    odestep_tick_d tick;
+    odestep_status s = ODESTEP_OK;
+    int k;
+    memset(events, 0, sizeof events);
+    events[0].g = height_d;
+    events[0].direction = ODESTEP_RISING;
+    events[1].g = height_minus_half_d;
+    events[1].direction = ODESTEP_FALLING;
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_dp54_d, events, 2, NULL, &sys, y, 0.0, 0.1) == ODESTEP_OK);
+    for (k = 0; k < 10 && s == ODESTEP_OK; ++k) s = odestep_event_loop_tick_d(&loop, &sys, y, &tick);
+    CHECK(s == ODESTEP_STOPPED_BY_EVENT);
+    CHECK(k == 4 && tick.event == 1 && tick.fired == 1);
+    CHECK_CLOSE(tick.t, t_half, 1e-9);
+    CHECK_CLOSE(y[0], 0.5, 1e-9);
+    CHECK_CLOSE(odestep_event_loop_time_d(&loop), t_half, 1e-9);
+    CHECK(odestep_event_loop_tick_d(&loop, &sys, y, &tick) == ODESTEP_OK);
+    CHECK_CLOSE(tick.t, 0.4, 1e-15);
+}
+
+static void test_event_bad_input(void) {
+    odestep_event_loop_d loop;
+    const odestep_system_d sys = {ball_d, NULL, 2};
+    odestep_system_d other = {ball_d, NULL, 1};
+    odestep_event_d events[ODESTEP_C_MAX_EVENTS + 1];
+    double y[2] = {1.0, 0.0};
+    size_t i;
+    memset(&loop, 0, sizeof loop);
+    memset(events, 0, sizeof events);
+    for (i = 0; i <= ODESTEP_C_MAX_EVENTS; ++i) {
+        events[i].g = height_d;
+        events[i].direction = ODESTEP_FALLING;
+    }
+    /* a zeroed loop refuses to tick */
+    CHECK(odestep_event_loop_tick_d(&loop, &sys, y, NULL) == ODESTEP_INVALID_TIME);
+    CHECK(isnan(odestep_event_loop_time_d(&loop)));
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, events, 0, NULL, &sys, y, 0.0, 0.01) ==
+          ODESTEP_INVALID_SETTING);
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, events, ODESTEP_C_MAX_EVENTS + 1, NULL, &sys, y, 0.0,
+                                     0.01) == ODESTEP_INVALID_SETTING);
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_velocity_verlet_d, events, 1, NULL, &sys, y, 0.0, 0.01) ==
+          ODESTEP_INVALID_SETTING);
+    events[0].direction = (odestep_direction)7;
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, events, 1, NULL, &sys, y, 0.0, 0.01) ==
+          ODESTEP_INVALID_SETTING);
+    events[0].direction = ODESTEP_FALLING;
+    events[0].g = NULL;
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, events, 1, NULL, &sys, y, 0.0, 0.01) ==
+          ODESTEP_INVALID_SETTING);
+    events[0].g = height_d;
+    events[0].tolerance = -1.0;
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, events, 1, NULL, &sys, y, 0.0, 0.01) ==
+          ODESTEP_INVALID_TOLERANCE);
+    events[0].tolerance = 0.0;
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, events, 1, NULL, &sys, y, 0.0, 0.0) ==
+          ODESTEP_INVALID_STEP);
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, events, 1, NULL, &sys, y, NAN, 0.01) ==
+          ODESTEP_INVALID_TIME);
+    events[0].g = nan_g_d;
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, events, 1, NULL, &sys, y, 0.0, 0.01) ==
+          ODESTEP_NON_FINITE_EVENT);
+    CHECK(odestep_event_loop_tick_d(&loop, &sys, y, NULL) == ODESTEP_INVALID_TIME); /* not started */
+    events[0].g = height_d;
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, events, 1, NULL, &sys, y, 0.0, 0.01) == ODESTEP_OK);
+    CHECK(odestep_event_loop_tick_d(&loop, &other, y, NULL) == ODESTEP_INVALID_SETTING); /* another n */
+    CHECK(y[0] == 1.0 && y[1] == 0.0);
+    CHECK(odestep_event_loop_tick_d(&loop, &sys, y, NULL) == ODESTEP_OK);
+    CHECK(y[0] < 1.0);
+}
+
+/* NaN from the right-hand side inside a tick: the tick is rolled back, y stays at the last tick's end. */
+static void test_event_nan(void) {
+    odestep_event_loop_d loop;
+    poison p = {0, 1000};
+    const odestep_system_d sys = {poisoned_d, &p, 2};
+    odestep_event_d e;
+    double y[2] = {1.0, 3.0};
+    double kept[2];
+    odestep_tick_d tick;
+    memset(&e, 0, sizeof e);
+    e.g = height_minus_half_d;
+    e.direction = ODESTEP_EITHER;
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, &e, 1, NULL, &sys, y, 0.0, 0.1) == ODESTEP_OK);
+    CHECK(odestep_event_loop_tick_d(&loop, &sys, y, &tick) == ODESTEP_OK);
+    kept[0] = y[0];
+    kept[1] = y[1];
+    p.nan_from = p.calls + 2;
+    CHECK(odestep_event_loop_tick_d(&loop, &sys, y, &tick) == ODESTEP_NON_FINITE);
+    CHECK(y[0] == kept[0] && y[1] == kept[1]);
+    CHECK_CLOSE(tick.t, 0.1, 1e-15);
+}
+
 int main(void) {
     test_rk4_decay();
     test_euler_decay();
@@ -449,6 +622,10 @@ int main(void) {
     test_n_below_max();
     test_float();
     test_names_and_info();
+    test_bouncing_ball();
+    test_terminal_event();
+    test_event_bad_input();
+    test_event_nan();
     printf("c api tests: %d failed checks\n", check_failures);
     return check_failures == 0 ? 0 : 1;
 }
