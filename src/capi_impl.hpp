@@ -197,15 +197,20 @@ bool size_ok(std::size_t n) noexcept {
     return n >= 1 && n <= max_states;
 }
 
-/// The caller's n values into a padded state.
+/// The caller's n values into a padded state: the first n copied, the others zero.
 template <class T>
-state<T> load(const T* from, std::size_t n) noexcept {
-    state<T> s{};
+ODESTEP_INLINE void load_into(state<T>& s, const T* from, std::size_t n) noexcept {
     for (std::size_t i = 0; i < n; ++i) s[i] = from[i];
+    for (std::size_t i = n; i < max_states; ++i) s[i] = T(0);
+}
+template <class T>
+ODESTEP_INLINE state<T> load(const T* from, std::size_t n) noexcept {
+    state<T> s;  // every component written by load_into
+    load_into(s, from, n);
     return s;
 }
 template <class T>
-void store(T* to, const state<T>& s, std::size_t n) noexcept {
+ODESTEP_INLINE void store(T* to, const state<T>& s, std::size_t n) noexcept {
     for (std::size_t i = 0; i < n; ++i) to[i] = s[i];
 }
 
@@ -220,22 +225,26 @@ status check_step(T t, T dt) noexcept {
 template <class T>
 odestep_status step(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1, T* e2) {
     const method_ops<T>* m = s != nullptr ? ops<T>(s) : nullptr;
-    if (m == nullptr || sys == nullptr || sys->f == nullptr || y == nullptr || !size_ok<T>(sys->n) || m->newtonian ||
-        (e2 != nullptr && e1 == nullptr))
-        return ODESTEP_INVALID_SETTING;
-    if ((e1 != nullptr && m->error_estimates < 1) || (e2 != nullptr && m->error_estimates < 2))
+    if (ODESTEP_UNLIKELY(m == nullptr || sys == nullptr || sys->f == nullptr || y == nullptr || !size_ok<T>(sys->n) ||
+                         m->newtonian))
         return ODESTEP_INVALID_SETTING;
     const status checked = check_step(t, dt);
-    if (checked != status::ok) return to_c(checked);
-    state<T> ys = load(y, sys->n);
+    if (ODESTEP_UNLIKELY(checked != status::ok)) return to_c(checked);
+    const std::size_t n = sys->n;
+    state<T> ys = load(y, n);
+    if (e1 == nullptr) {  // the plain step: no estimate arrays at all
+        const status r = m->step(s->storage.bytes, c_rhs<T>{sys}, ys, t, dt, nullptr, nullptr);
+        if (r == status::ok) store(y, ys, n);
+        return to_c(r);
+    }
+    if (m->error_estimates < 1 || (e2 != nullptr && m->error_estimates < 2)) return ODESTEP_INVALID_SETTING;
     state<T> err1{};
     state<T> err2{};
-    const status r = m->step(s->storage.bytes, c_rhs<T>{sys}, ys, t, dt, e1 != nullptr ? &err1 : nullptr,
-                             e2 != nullptr ? &err2 : nullptr);
+    const status r = m->step(s->storage.bytes, c_rhs<T>{sys}, ys, t, dt, &err1, e2 != nullptr ? &err2 : nullptr);
     if (r == status::ok) {
-        store(y, ys, sys->n);
-        if (e1 != nullptr) store(e1, err1, sys->n);
-        if (e2 != nullptr) store(e2, err2, sys->n);
+        store(y, ys, n);
+        store(e1, err1, n);
+        if (e2 != nullptr) store(e2, err2, n);
     }
     return to_c(r);
 }
