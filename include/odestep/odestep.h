@@ -42,7 +42,7 @@
 /// Storage of a stepper, in scalars (float or double): the largest stepper object (Adams-Bashforth-Moulton
 /// 4: three past derivatives and where the next step must start) with room to spare. The library checks
 /// at compile time that every stepper fits.
-#define ODESTEP_C_STEPPER_SCALARS (4 * ODESTEP_C_MAX_STATES + 16)
+#define ODESTEP_C_STEPPER_SCALARS ((4u * (size_t)ODESTEP_C_MAX_STATES) + 16u)
 
 #ifdef __cplusplus
 extern "C" {
@@ -153,11 +153,11 @@ extern const odestep_method_d odestep_forest_ruth_d;
 typedef struct odestep_stepper_d {
     const odestep_method_d* method;  ///< the method; set by odestep_stepper_init_d
     union {
-        unsigned char bytes[ODESTEP_C_STEPPER_SCALARS * sizeof(double)];  ///< the stepper object
-        double align_scalar;                                              ///< alignment only
-        void* align_pointer;                                              ///< alignment only
-        uint64_t align_integer;                                           ///< alignment only
-    } storage;                                                            ///< not to be touched
+        unsigned char bytes[(ODESTEP_C_STEPPER_SCALARS * sizeof(double))];  ///< the stepper object
+        double align_scalar;                                                ///< alignment only
+        void* align_pointer;                                                ///< alignment only
+        uint64_t align_integer;                                             ///< alignment only
+    } storage;                                                              ///< not to be touched
 } odestep_stepper_d;
 
 /// What a fixed-step loop reports besides its status: the time of the state and the steps completed.
@@ -281,13 +281,13 @@ typedef struct odestep_event_loop_d {
     size_t n;  ///< the state size, set by a successful start (0 before)
     union {
         unsigned char bytes[sizeof(odestep_stepper_d) +
-                            ODESTEP_C_MAX_EVENTS * (12 * sizeof(void*) + 8 * sizeof(double)) +
-                            ODESTEP_C_TICK_FIRINGS * (sizeof(size_t) + sizeof(double)) + 8 * sizeof(double) +
-                            8 * sizeof(void*)];  ///< the C++ event_stepper
-        double align_scalar;                     ///< alignment only
-        void* align_pointer;                     ///< alignment only
-        uint64_t align_integer;                  ///< alignment only
-    } storage;                                   ///< not to be touched
+                            ((size_t)ODESTEP_C_MAX_EVENTS * ((12u * sizeof(void*)) + (8u * sizeof(double)))) +
+                            ((size_t)ODESTEP_C_TICK_FIRINGS * (sizeof(size_t) + sizeof(double))) +
+                            (8u * sizeof(double)) + (8u * sizeof(void*))];  ///< the C++ event_stepper
+        double align_scalar;                                                ///< alignment only
+        void* align_pointer;                                                ///< alignment only
+        uint64_t align_integer;                                             ///< alignment only
+    } storage;                                                              ///< not to be touched
 } odestep_event_loop_d;
 
 /// Starts a per-tick event loop: `method` steps `system` with ticks of dt from t0, watching `events[0 ..
@@ -368,11 +368,11 @@ extern const odestep_method_f odestep_forest_ruth_f;
 typedef struct odestep_stepper_f {
     const odestep_method_f* method;  ///< the method; set by odestep_stepper_init_f
     union {
-        unsigned char bytes[ODESTEP_C_STEPPER_SCALARS * sizeof(float) + 8 * sizeof(void*)];  ///< the object
-        float align_scalar;                                                                  ///< alignment only
-        void* align_pointer;                                                                 ///< alignment only
-        uint64_t align_integer;                                                              ///< alignment only
-    } storage;                                                                               ///< not to be touched
+        unsigned char bytes[(ODESTEP_C_STEPPER_SCALARS * sizeof(float)) + (8u * sizeof(void*))];  ///< the object
+        float align_scalar;                                                                       ///< alignment only
+        void* align_pointer;                                                                      ///< alignment only
+        uint64_t align_integer;                                                                   ///< alignment only
+    } storage;                                                                                    ///< not to be touched
 } odestep_stepper_f;
 
 /// What a float loop reports (see odestep_run_d).
@@ -447,13 +447,13 @@ typedef struct odestep_event_loop_f {
     size_t n;  ///< the state size, set by a successful start (0 before)
     union {
         unsigned char bytes[sizeof(odestep_stepper_f) +
-                            ODESTEP_C_MAX_EVENTS * (12 * sizeof(void*) + 8 * sizeof(float)) +
-                            ODESTEP_C_TICK_FIRINGS * (sizeof(size_t) + sizeof(float)) + 8 * sizeof(float) +
-                            8 * sizeof(void*)];  ///< the C++ event_stepper
-        float align_scalar;                      ///< alignment only
-        void* align_pointer;                     ///< alignment only
-        uint64_t align_integer;                  ///< alignment only
-    } storage;                                   ///< not to be touched
+                            ((size_t)ODESTEP_C_MAX_EVENTS * ((12u * sizeof(void*)) + (8u * sizeof(float)))) +
+                            ((size_t)ODESTEP_C_TICK_FIRINGS * (sizeof(size_t) + sizeof(float))) + (8u * sizeof(float)) +
+                            (8u * sizeof(void*))];  ///< the C++ event_stepper
+        float align_scalar;                         ///< alignment only
+        void* align_pointer;                        ///< alignment only
+        uint64_t align_integer;                     ///< alignment only
+    } storage;                                      ///< not to be touched
 } odestep_event_loop_f;
 
 /// Starts a per-tick event loop: `method` steps `system` with ticks of dt from t0, watching `events[0 ..

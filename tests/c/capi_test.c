@@ -237,7 +237,9 @@ static void test_adams(void) {
         CHECK(y == 1.0 && run.steps == 0 && run.t == 0.0);
 
         odestep_stepper_reset_d(&s);
-        for (i = 0; i < 5; ++i) CHECK(odestep_step_d(&s, &sys, &y, i * 0.05, 0.05) == ODESTEP_OK);
+        for (i = 0; i < 5; ++i) {
+            CHECK(odestep_step_d(&s, &sys, &y, i * 0.05, 0.05) == ODESTEP_OK);
+        }
         {
             const double kept = y;
             CHECK(odestep_step_d(&s, &sys, &y, 5 * 0.05, 0.1) == ODESTEP_STEP_MISMATCH); /* another dt */
@@ -349,7 +351,9 @@ static void test_nan_roll_back(void) {
         int i;
         p.calls = 0;
         p.nan_from = 1000;
-        for (i = 0; i < 4; ++i) CHECK(odestep_step_d(&s, &sys, z, i * 0.1, 0.1) == ODESTEP_OK);
+        for (i = 0; i < 4; ++i) {
+            CHECK(odestep_step_d(&s, &sys, z, i * 0.1, 0.1) == ODESTEP_OK);
+        }
         CHECK(y[0] == z[0] && y[1] == z[1]);
     }
 }
@@ -485,7 +489,7 @@ static void test_bouncing_ball(void) {
     expected[0] = t1;
     expected[1] = t1 + 2.0 * 0.8 * v1 / gravity;
     expected[2] = expected[1] + 2.0 * 0.64 * v1 / gravity;
-    memset(&ground, 0, sizeof ground);
+    (void)memset(&ground, 0, sizeof ground);
     ground.g = height_d;
     ground.direction = ODESTEP_FALLING;
     ground.action = bounce_d;
@@ -518,7 +522,8 @@ static void test_terminal_event(void) {
     odestep_tick_d tick;
     odestep_status s = ODESTEP_OK;
     int k;
-    memset(events, 0, sizeof events);
+    (void)memset(&tick, 0, sizeof tick);
+    (void)memset(events, 0, sizeof events);
     events[0].g = height_d;
     events[0].direction = ODESTEP_RISING;
     events[1].g = height_minus_half_d;
@@ -541,8 +546,8 @@ static void test_event_bad_input(void) {
     odestep_event_d events[ODESTEP_C_MAX_EVENTS + 1];
     double y[2] = {1.0, 0.0};
     size_t i;
-    memset(&loop, 0, sizeof loop);
-    memset(events, 0, sizeof events);
+    (void)memset(&loop, 0, sizeof loop);
+    (void)memset(events, 0, sizeof events);
     for (i = 0; i <= ODESTEP_C_MAX_EVENTS; ++i) {
         events[i].g = height_d;
         events[i].direction = ODESTEP_FALLING;
@@ -593,7 +598,7 @@ static void test_event_nan(void) {
     double y[2] = {1.0, 3.0};
     double kept[2];
     odestep_tick_d tick;
-    memset(&e, 0, sizeof e);
+    (void)memset(&e, 0, sizeof e);
     e.g = height_minus_half_d;
     e.direction = ODESTEP_EITHER;
     CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, &e, 1, NULL, &sys, y, 0.0, 0.1) == ODESTEP_OK);
@@ -626,6 +631,6 @@ int main(void) {
     test_terminal_event();
     test_event_bad_input();
     test_event_nan();
-    printf("c api tests: %d failed checks\n", check_failures);
+    (void)printf("c api tests: %d failed checks\n", check_failures);
     return check_failures == 0 ? 0 : 1;
 }

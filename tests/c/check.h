@@ -9,25 +9,25 @@
 extern int check_failures;
 
 /// Counts and reports a failed condition.
-#define CHECK(condition)                                                         \
-    do {                                                                         \
-        if (!(condition)) {                                                      \
-            printf("%s:%d: CHECK(%s) failed\n", __FILE__, __LINE__, #condition); \
-            ++check_failures;                                                    \
-        }                                                                        \
+#define CHECK(condition)                                                               \
+    do {                                                                               \
+        if (!(condition)) {                                                            \
+            (void)printf("%s:%d: CHECK(%s) failed\n", __FILE__, __LINE__, #condition); \
+            ++check_failures;                                                          \
+        }                                                                              \
     } while (0)
 
 /// |a - b| <= tolerance, reported with the values (as double, converted explicitly).
-#define CHECK_CLOSE(a, b, tolerance)                                                                                   \
-    do {                                                                                                               \
-        const double check_a_ = (double)(a);                                                                           \
-        const double check_b_ = (double)(b);                                                                           \
-        const double check_d_ = check_a_ > check_b_ ? check_a_ - check_b_ : check_b_ - check_a_;                       \
-        if (!(check_d_ <= (double)(tolerance))) {                                                                      \
-            printf("%s:%d: CHECK_CLOSE(%s, %s): %.17g vs %.17g, difference %.3g > %.3g\n", __FILE__, __LINE__, #a, #b, \
-                   check_a_, check_b_, check_d_, (double)(tolerance));                                                 \
-            ++check_failures;                                                                                          \
-        }                                                                                                              \
+#define CHECK_CLOSE(a, b, tolerance)                                                                                 \
+    do {                                                                                                             \
+        const double check_a_ = (double)(a);                                                                         \
+        const double check_b_ = (double)(b);                                                                         \
+        const double check_d_ = check_a_ > check_b_ ? check_a_ - check_b_ : check_b_ - check_a_;                     \
+        if (!(check_d_ <= (double)(tolerance))) {                                                                    \
+            (void)printf("%s:%d: CHECK_CLOSE(%s, %s): %.17g vs %.17g, difference %.3g > %.3g\n", __FILE__, __LINE__, \
+                         #a, #b, check_a_, check_b_, check_d_, (double)(tolerance));                                 \
+            ++check_failures;                                                                                        \
+        }                                                                                                            \
     } while (0)
 
 #endif
