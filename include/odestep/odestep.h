@@ -72,9 +72,12 @@ typedef enum odestep_status {
     ODESTEP_SINGULAR_MATRIX = 12,   ///< an implicit method's matrix is singular; rolled back
     ODESTEP_SUBSTEP_LIMIT = 13,     ///< an adaptive step needed more internal steps than its cap
     ODESTEP_STEP_TOO_SMALL = 14,    ///< an adaptive step size fell below what the time resolves
-    ODESTEP_INVALID_SETTING = 15    ///< an argument other than a time, a step or a tolerance is wrong: a null
+    ODESTEP_INVALID_SETTING = 15,   ///< an argument other than a time, a step or a tolerance is wrong: a null
                                     ///< pointer, n of 0 or above ODESTEP_C_MAX_STATES, a stepper not
                                     ///< initialised or of the other kind of system; nothing was touched
+    /// Not a value: gives the enum the range of a 32-bit int in C++ (the library reads a value the caller
+    /// stored, which C allows to be any int; without it, an out-of-range value would be undefined in C++)
+    ODESTEP_STATUS_INT_RANGE_ = -2147483647 - 1
 } odestep_status;
 
 /// A short English name of a status ("ok", "non_finite", ...), in constant storage; "unknown" for a value
@@ -226,7 +229,10 @@ odestep_status odestep_integrate_newton_d(odestep_stepper_d* stepper, const odes
 typedef enum odestep_direction {
     ODESTEP_RISING = 0,   ///< - to +
     ODESTEP_FALLING = 1,  ///< + to -
-    ODESTEP_EITHER = 2    ///< both
+    ODESTEP_EITHER = 2,   ///< both
+    /// Not a value: gives the enum the range of a 32-bit int in C++ (the library reads a value the caller
+    /// stored, which C allows to be any int; without it, an out-of-range value would be undefined in C++)
+    ODESTEP_DIRECTION_INT_RANGE_ = -2147483647 - 1
 } odestep_direction;
 
 /// What an event's action returns: go on, or stop the tick at the event (ODESTEP_STOPPED_BY_EVENT).
