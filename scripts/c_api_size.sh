@@ -64,7 +64,7 @@ for core in cortex-m4f cortex-m0plus; do
     lib=$out/$core$opt
     mkdir -p "$lib"
     for src in capi capi_float capi_events_float; do
-      arm-none-eabi-g++ "${cpu[@]}" $opt -std=c++17 -fno-exceptions -fno-rtti -ffunction-sections -fdata-sections \
+      arm-none-eabi-g++ "${cpu[@]}" $opt -std=c++17 -fno-exceptions -fno-rtti -ffp-contract=off -ffunction-sections -fdata-sections \
         -DODESTEP_C_MAX_STATES="${MAX_STATES:-8}" -I"$root/include" -c "$root/src/$src.cpp" -o "$lib/$src.o" || exit 1
     done
     arm-none-eabi-g++ "${cpu[@]}" -Os -std=c++17 -fno-exceptions -fno-rtti -ffunction-sections -fdata-sections \
