@@ -36,6 +36,10 @@ struct event_types<double> {
     using tick = odestep_tick_d;
     using g = odestep_event_fn_d;
     using action = odestep_event_action_d;
+    using newton_event = odestep_newton_event_d;
+    using newton_loop = odestep_newton_event_loop_d;
+    using newton_g = odestep_newton_event_fn_d;
+    using newton_action = odestep_newton_event_action_d;
 };
 template <>
 struct event_types<float> {
@@ -44,6 +48,10 @@ struct event_types<float> {
     using tick = odestep_tick_f;
     using g = odestep_event_fn_f;
     using action = odestep_event_action_f;
+    using newton_event = odestep_newton_event_f;
+    using newton_loop = odestep_newton_event_loop_f;
+    using newton_g = odestep_newton_event_fn_f;
+    using newton_action = odestep_newton_event_action_f;
 };
 
 /// g(t, y) of one C event; without a function (an unused slot), the constant 1.
@@ -65,8 +73,26 @@ struct c_action {
     }
 };
 
+/// g(t, x, v) of one C event of Newton's equations; without a function, the constant 1.
 template <class T>
-using c_event = event<state<T>, c_g<T>, c_action<T>>;
+struct c_newton_g {
+    typename event_types<T>::newton_g g;
+    void* ctx;
+    T operator()(T t, const state<T>& x, const state<T>& v) const {
+        return g != nullptr ? g(t, x.data(), v.data(), ctx) : T(1);
+    }
+};
+
+/// The action on x and v of one C event; without a function, a terminal event.
+template <class T>
+struct c_newton_action {
+    typename event_types<T>::newton_action fn;
+    void* ctx;
+    event_result operator()(T t, state<T>& x, state<T>& v) const {
+        if (fn == nullptr) return event_result::stop;
+        return fn(t, x.data(), v.data(), ctx) == ODESTEP_PROCEED ? event_result::proceed : event_result::stop;
+    }
+};
 
 /// The loop's stepper: a C method and its stepper object, held by value.
 template <class T>
@@ -79,52 +105,104 @@ struct owning_adapter : stepper_defaults<state<T>> {
     void reset() noexcept { m->reset(storage); }
 };
 
-template <class T, std::size_t>
-using event_at = c_event<T>;
-
-template <class T, class Sequence>
-struct set_for;
-template <class T, std::size_t... I>
-struct set_for<T, std::index_sequence<I...>> {
-    using type = event_set<default_root_finder, event_at<T, I>...>;
-    static type make(const std::array<c_event<T>, max_events>& e, event_limits limits) {
-        return type{std::tuple<event_at<T, I>...>(e[I]...), limits};
+/// The Newtonian loop's stepper. Each step evaluates the acceleration afresh (`kept` false): the loop's x
+/// is a copy made for each tick, so a kept acceleration could be matched by that copy's address alone.
+template <class T>
+struct owning_newton_adapter : stepper_defaults<state<T>> {
+    static constexpr int order = 1;
+    static constexpr std::size_t rhs_evals_per_step = 1;
+    static constexpr system_form system = system_form::newtonian;
+    const method_ops<T>* m = nullptr;
+    alignas(stepper_t<T>) unsigned char storage[sizeof(stepper_t<T>::storage)] = {};
+    status step(const c_accel<T>& a, state<T>& x, state<T>& v, T t, T dt) {
+        return m->step_newton(storage, a, x, v, t, dt, false);
     }
+    void reset() noexcept { m->reset(storage); }
+};
+
+/// What differs between the first-order loop and the Newtonian one.
+template <class T, bool Newton>
+struct kind;
+template <class T>
+struct kind<T, false> {
+    using c_event = typename event_types<T>::event;
+    using c_loop = typename event_types<T>::loop;
+    using c_system = typename c_types<T>::system;
+    using g_type = c_g<T>;
+    using action_type = c_action<T>;
+    using stepper = owning_adapter<T>;
+    using system_adapter = c_rhs<T>;
+    static bool system_ok(const c_system* s) noexcept { return s != nullptr && s->f != nullptr; }
 };
 template <class T>
-using set_maker = set_for<T, std::make_index_sequence<max_events>>;
-template <class T>
-using loop_t = event_stepper<owning_adapter<T>, typename set_maker<T>::type, ODESTEP_C_TICK_FIRINGS>;
+struct kind<T, true> {
+    using c_event = typename event_types<T>::newton_event;
+    using c_loop = typename event_types<T>::newton_loop;
+    using c_system = typename c_types<T>::newton;
+    using g_type = c_newton_g<T>;
+    using action_type = c_newton_action<T>;
+    using stepper = owning_newton_adapter<T>;
+    using system_adapter = c_accel<T>;
+    static bool system_ok(const c_system* s) noexcept { return s != nullptr && s->a != nullptr; }
+};
 
-template <class T>
-loop_t<T>& loop_object(typename event_types<T>::loop* loop) noexcept {
-    static_assert(sizeof(loop_t<T>) <= sizeof(loop->storage.bytes),
+template <class T, bool Newton>
+using c_event = event<state<T>, typename kind<T, Newton>::g_type, typename kind<T, Newton>::action_type>;
+
+template <class T, bool Newton, std::size_t>
+using event_at = c_event<T, Newton>;
+
+template <class T, bool Newton, class Sequence>
+struct set_for;
+template <class T, bool Newton, std::size_t... I>
+struct set_for<T, Newton, std::index_sequence<I...>> {
+    using type = event_set<default_root_finder, event_at<T, Newton, I>...>;
+    static type make(const std::array<c_event<T, Newton>, max_events>& e, event_limits limits) {
+        return type{std::tuple<event_at<T, Newton, I>...>(e[I]...), limits};
+    }
+};
+template <class T, bool Newton>
+using set_maker = set_for<T, Newton, std::make_index_sequence<max_events>>;
+template <class T, bool Newton>
+using loop_t =
+    event_stepper<typename kind<T, Newton>::stepper, typename set_maker<T, Newton>::type, ODESTEP_C_TICK_FIRINGS>;
+
+template <class T, bool Newton>
+loop_t<T, Newton>& loop_object(typename kind<T, Newton>::c_loop* loop) noexcept {
+    static_assert(sizeof(loop_t<T, Newton>) <= sizeof(loop->storage.bytes),
                   "odestep: the event loop's storage in odestep.h is too small");
-    static_assert(alignof(loop_t<T>) <= alignof(typename event_types<T>::loop),
+    static_assert(alignof(loop_t<T, Newton>) <= alignof(typename kind<T, Newton>::c_loop),
                   "odestep: the event loop's storage alignment");
-    static_assert(std::is_trivially_destructible_v<loop_t<T>>, "the C API never destroys a loop object");
-    return *std::launder(reinterpret_cast<loop_t<T>*>(loop->storage.bytes));
+    static_assert(std::is_trivially_destructible_v<loop_t<T, Newton>>, "the C API never destroys a loop object");
+    return *std::launder(reinterpret_cast<loop_t<T, Newton>*>(loop->storage.bytes));
 }
-template <class T>
-const loop_t<T>& loop_object(const typename event_types<T>::loop* loop) noexcept {
-    return *std::launder(reinterpret_cast<const loop_t<T>*>(loop->storage.bytes));
+template <class T, bool Newton>
+const loop_t<T, Newton>& loop_object(const typename kind<T, Newton>::c_loop* loop) noexcept {
+    return *std::launder(reinterpret_cast<const loop_t<T, Newton>*>(loop->storage.bytes));
 }
 
-template <class T>
-odestep_status event_start(typename event_types<T>::loop* loop, const typename c_types<T>::method* method,
-                           const typename event_types<T>::event* events, std::size_t count,
-                           const odestep_event_limits* limits, const typename c_types<T>::system* sys, const T* y, T t0,
-                           T dt) {
+/// Starts a loop: y is {y} (first order) or {x, v} (Newton's equations).
+template <class T, bool Newton>
+odestep_status event_start(typename kind<T, Newton>::c_loop* loop, const typename c_types<T>::method* method,
+                           const typename kind<T, Newton>::c_event* events, std::size_t count,
+                           const odestep_event_limits* limits, const typename kind<T, Newton>::c_system* sys,
+                           const T* y, const T* v, T t0, T dt) {
+    using K = kind<T, Newton>;
     if (loop == nullptr) return ODESTEP_INVALID_SETTING;
     loop->n = 0;  // not started until start succeeds
-    if (method == nullptr || events == nullptr || sys == nullptr || sys->f == nullptr || y == nullptr ||
-        !size_ok<T>(sys->n) || count == 0 || count > max_events || method->ops.newtonian)
+    if (method == nullptr || events == nullptr || !K::system_ok(sys) || y == nullptr || (Newton && v == nullptr) ||
+        !size_ok<T>(sys->n) || count == 0 || count > max_events || method->ops.newtonian != Newton)
         return ODESTEP_INVALID_SETTING;
-    std::array<c_event<T>, max_events> set{};
+    std::array<c_event<T, Newton>, max_events> set{};
     for (std::size_t i = 0; i < max_events; ++i) {
         if (i >= count) {
-            set[i] = c_event<T>{
-                c_g<T>{nullptr, nullptr}, direction::either, c_action<T>{nullptr, nullptr}, T(0), T(0), T(0), 0};
+            set[i] = c_event<T, Newton>{typename K::g_type{nullptr, nullptr},
+                                        direction::either,
+                                        typename K::action_type{nullptr, nullptr},
+                                        T(0),
+                                        T(0),
+                                        T(0),
+                                        0};
             continue;
         }
         const auto& e = events[i];
@@ -136,8 +214,13 @@ odestep_status event_start(typename event_types<T>::loop* loop, const typename c
             case ODESTEP_EITHER: d = direction::either; break;
             default: return ODESTEP_INVALID_SETTING;
         }
-        set[i] = c_event<T>{c_g<T>{e.g, e.ctx}, d, c_action<T>{e.action, e.ctx}, e.tolerance, e.band, e.dead_time,
-                            e.max_firings};
+        set[i] = c_event<T, Newton>{typename K::g_type{e.g, e.ctx},
+                                    d,
+                                    typename K::action_type{e.action, e.ctx},
+                                    e.tolerance,
+                                    e.band,
+                                    e.dead_time,
+                                    e.max_firings};
     }
     event_limits l{};
     if (limits != nullptr) {
@@ -145,24 +228,40 @@ odestep_status event_start(typename event_types<T>::loop* loop, const typename c
         if (limits->max_firings_per_step != 0) l.max_firings_per_step = limits->max_firings_per_step;
         l.probes = limits->probes;
     }
-    loop_t<T>* lp =
-        ::new (static_cast<void*>(loop->storage.bytes)) loop_t<T>(owning_adapter<T>{}, set_maker<T>::make(set, l));
+    loop_t<T, Newton>* lp = ::new (static_cast<void*>(loop->storage.bytes))
+        loop_t<T, Newton>(typename K::stepper{}, set_maker<T, Newton>::make(set, l));
     lp->stepper().m = &method->ops;
     method->ops.construct(lp->stepper().storage);
     const state<T> ys = load(y, sys->n);
-    const status s = lp->start(t0, dt, ys);
+    status s = status::ok;
+    if constexpr (Newton) {
+        const state<T> vs = load(v, sys->n);
+        s = lp->start(t0, dt, ys, vs);
+    } else {
+        s = lp->start(t0, dt, ys);
+    }
     if (s == status::ok) loop->n = sys->n;
     return to_c(s);
 }
 
-template <class T>
-odestep_status event_tick(typename event_types<T>::loop* loop, const typename c_types<T>::system* sys, T* y,
-                          typename event_types<T>::tick* tick) {
+/// One tick: y is y (first order) or x, with v (Newton's equations).
+template <class T, bool Newton>
+odestep_status event_tick(typename kind<T, Newton>::c_loop* loop, const typename kind<T, Newton>::c_system* sys, T* y,
+                          T* v, typename event_types<T>::tick* tick) {
+    using K = kind<T, Newton>;
     if (loop == nullptr || loop->n == 0) return ODESTEP_INVALID_TIME;  // as event_stepper::tick before start
-    if (sys == nullptr || sys->f == nullptr || y == nullptr || sys->n != loop->n) return ODESTEP_INVALID_SETTING;
-    loop_t<T>& lp = loop_object<T>(loop);
+    if (!K::system_ok(sys) || y == nullptr || (Newton && v == nullptr) || sys->n != loop->n)
+        return ODESTEP_INVALID_SETTING;
+    loop_t<T, Newton>& lp = loop_object<T, Newton>(loop);
     state<T> ys = load(y, sys->n);
-    const auto r = lp.tick(c_rhs<T>{sys}, ys);
+    tick_result<T, ODESTEP_C_TICK_FIRINGS> r;
+    if constexpr (Newton) {
+        state<T> vs = load(v, sys->n);
+        r = lp.tick(typename K::system_adapter{sys}, ys, vs);
+        store(v, vs, sys->n);
+    } else {
+        r = lp.tick(typename K::system_adapter{sys}, ys);
+    }
     store(y, ys, sys->n);  // the state at r.t, whatever the status
     if (tick != nullptr) {
         tick->t = r.t;
@@ -176,24 +275,29 @@ odestep_status event_tick(typename event_types<T>::loop* loop, const typename c_
     return to_c(r.status);
 }
 
-template <class T>
-odestep_status event_rearm(typename event_types<T>::loop* loop, const T* y) {
+template <class T, bool Newton>
+odestep_status event_rearm(typename kind<T, Newton>::c_loop* loop, const T* y, const T* v) {
     if (loop == nullptr || loop->n == 0) return ODESTEP_INVALID_TIME;
-    if (y == nullptr) return ODESTEP_INVALID_SETTING;
+    if (y == nullptr || (Newton && v == nullptr)) return ODESTEP_INVALID_SETTING;
     const state<T> ys = load(y, loop->n);
-    return to_c(loop_object<T>(loop).rearm(ys));
+    if constexpr (Newton) {
+        const state<T> vs = load(v, loop->n);
+        return to_c(loop_object<T, Newton>(loop).rearm(ys, vs));
+    } else {
+        return to_c(loop_object<T, Newton>(loop).rearm(ys));
+    }
 }
 
-template <class T>
-T event_time(const typename event_types<T>::loop* loop) {
+template <class T, bool Newton>
+T event_time(const typename kind<T, Newton>::c_loop* loop) {
     if (loop == nullptr || loop->n == 0) return std::numeric_limits<T>::quiet_NaN();
-    return loop_object<T>(loop).time();
+    return loop_object<T, Newton>(loop).time();
 }
 
-template <class T>
-std::size_t event_firings(const typename event_types<T>::loop* loop, std::size_t i) {
+template <class T, bool Newton>
+std::size_t event_firings(const typename kind<T, Newton>::c_loop* loop, std::size_t i) {
     if (loop == nullptr || loop->n == 0 || i >= max_events) return 0;
-    return loop_object<T>(loop).firings(i);
+    return loop_object<T, Newton>(loop).firings(i);
 }
 
 }  // namespace odestep::capi

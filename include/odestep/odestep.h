@@ -325,6 +325,52 @@ double odestep_event_loop_time_d(const odestep_event_loop_d* loop);
 /// Firings of event i since start (0 for i out of range or before start).
 size_t odestep_event_loop_firings_d(const odestep_event_loop_d* loop, size_t i);
 
+/* ---- events of Newton's equations (x and v) */
+
+/// An event function of x'' = a(t, x): g(t, x, v).
+typedef double (*odestep_newton_event_fn_d)(double t, const double* x, const double* v, void* ctx);
+/// An event's action on x and v (may change both); returns ODESTEP_PROCEED or ODESTEP_STOP.
+typedef odestep_event_result (*odestep_newton_event_action_d)(double t, double* x, double* v, void* ctx);
+
+/// One event of a Newtonian event loop: as odestep_event_d, with g and the action on x and v.
+typedef struct odestep_newton_event_d {
+    odestep_newton_event_fn_d g;           ///< the event function, not null
+    odestep_direction direction;           ///< which crossings count
+    odestep_newton_event_action_d action;  ///< null: a terminal event
+    void* ctx;                             ///< handed to g and to action unchanged
+    double tolerance;                      ///< as odestep_event_d
+    double band;                           ///< as odestep_event_d
+    double dead_time;                      ///< as odestep_event_d
+    size_t max_firings;                    ///< as odestep_event_d
+} odestep_newton_event_d;
+
+/// The storage of a Newtonian event loop (see odestep_event_loop_d).
+typedef struct odestep_newton_event_loop_d {
+    size_t n;  ///< the size of x and of v, set by a successful start (0 before)
+    union {
+        unsigned char bytes[sizeof(odestep_event_loop_d)];  ///< the C++ event_stepper
+        double align_scalar;                                ///< alignment only
+        void* align_pointer;                                ///< alignment only
+        uint64_t align_integer;                             ///< alignment only
+    } storage;                                              ///< not to be touched
+} odestep_newton_event_loop_d;
+
+/// odestep_event_loop_start_d for x'' = a(t, x): a Newtonian method (Euler-Cromer, velocity Verlet,
+/// Forest-Ruth) steps x and v, the events watch g(t, x, v). Each tick's step evaluates a afresh.
+odestep_status odestep_newton_event_loop_start_d(odestep_newton_event_loop_d* loop, const odestep_method_d* method,
+                                                 const odestep_newton_event_d* events, size_t count,
+                                                 const odestep_event_limits* limits, const odestep_newton_d* system,
+                                                 const double* x, const double* v, double t0, double dt);
+/// odestep_event_loop_tick_d for x and v.
+odestep_status odestep_newton_event_loop_tick_d(odestep_newton_event_loop_d* loop, const odestep_newton_d* system,
+                                                double* x, double* v, odestep_tick_d* tick);
+/// odestep_event_loop_rearm_d for x and v.
+odestep_status odestep_newton_event_loop_rearm_d(odestep_newton_event_loop_d* loop, const double* x, const double* v);
+/// odestep_event_loop_time_d of a Newtonian loop.
+double odestep_newton_event_loop_time_d(const odestep_newton_event_loop_d* loop);
+/// odestep_event_loop_firings_d of a Newtonian loop.
+size_t odestep_newton_event_loop_firings_d(const odestep_newton_event_loop_d* loop, size_t i);
+
 /* ---- float: the same API in single precision (see the double functions for each one's contract) ------- */
 
 /// The right-hand side of y' = f(t, y) in float.
@@ -490,6 +536,52 @@ float odestep_event_loop_time_f(const odestep_event_loop_f* loop);
 
 /// Firings of event i since start (0 for i out of range or before start).
 size_t odestep_event_loop_firings_f(const odestep_event_loop_f* loop, size_t i);
+
+/* ---- events of Newton's equations in float */
+
+/// An event function of x'' = a(t, x): g(t, x, v).
+typedef float (*odestep_newton_event_fn_f)(float t, const float* x, const float* v, void* ctx);
+/// An event's action on x and v (may change both); returns ODESTEP_PROCEED or ODESTEP_STOP.
+typedef odestep_event_result (*odestep_newton_event_action_f)(float t, float* x, float* v, void* ctx);
+
+/// One event of a Newtonian event loop: as odestep_event_d, with g and the action on x and v.
+typedef struct odestep_newton_event_f {
+    odestep_newton_event_fn_f g;           ///< the event function, not null
+    odestep_direction direction;           ///< which crossings count
+    odestep_newton_event_action_f action;  ///< null: a terminal event
+    void* ctx;                             ///< handed to g and to action unchanged
+    float tolerance;                       ///< as odestep_event_d
+    float band;                            ///< as odestep_event_d
+    float dead_time;                       ///< as odestep_event_d
+    size_t max_firings;                    ///< as odestep_event_d
+} odestep_newton_event_f;
+
+/// The storage of a Newtonian event loop (see odestep_event_loop_f).
+typedef struct odestep_newton_event_loop_f {
+    size_t n;  ///< the size of x and of v, set by a successful start (0 before)
+    union {
+        unsigned char bytes[sizeof(odestep_event_loop_f)];  ///< the C++ event_stepper
+        float align_scalar;                                 ///< alignment only
+        void* align_pointer;                                ///< alignment only
+        uint64_t align_integer;                             ///< alignment only
+    } storage;                                              ///< not to be touched
+} odestep_newton_event_loop_f;
+
+/// odestep_event_loop_start_f for x'' = a(t, x): a Newtonian method (Euler-Cromer, velocity Verlet,
+/// Forest-Ruth) steps x and v, the events watch g(t, x, v). Each tick's step evaluates a afresh.
+odestep_status odestep_newton_event_loop_start_f(odestep_newton_event_loop_f* loop, const odestep_method_f* method,
+                                                 const odestep_newton_event_f* events, size_t count,
+                                                 const odestep_event_limits* limits, const odestep_newton_f* system,
+                                                 const float* x, const float* v, float t0, float dt);
+/// odestep_event_loop_tick_f for x and v.
+odestep_status odestep_newton_event_loop_tick_f(odestep_newton_event_loop_f* loop, const odestep_newton_f* system,
+                                                float* x, float* v, odestep_tick_f* tick);
+/// odestep_event_loop_rearm_f for x and v.
+odestep_status odestep_newton_event_loop_rearm_f(odestep_newton_event_loop_f* loop, const float* x, const float* v);
+/// odestep_event_loop_time_f of a Newtonian loop.
+float odestep_newton_event_loop_time_f(const odestep_newton_event_loop_f* loop);
+/// odestep_event_loop_firings_f of a Newtonian loop.
+size_t odestep_newton_event_loop_firings_f(const odestep_newton_event_loop_f* loop, size_t i);
 
 #ifdef __cplusplus
 }

@@ -186,6 +186,50 @@ void compare_events() {
     AGREE(firings >= 4);
 }
 
+// The Newtonian event loop against event_stepper with velocity Verlet on x'' = -g, bouncing.
+void fall_c(double, const double*, double* a, void*) { a[0] = -9.81; }
+double floor_c(double, const double* x, const double*, void*) { return x[0]; }
+odestep_event_result kick_c(double, double*, double* v, void*) {
+    v[0] = -0.8 * v[0];
+    return ODESTEP_PROCEED;
+}
+void compare_newton_events() {
+    using state = std::array<double, 1>;
+    odestep_newton_event_loop_d loop;
+    const odestep_newton_d sys{fall_c, nullptr, 1};
+    odestep_newton_event_d ground{};
+    ground.g = floor_c;
+    ground.direction = ODESTEP_FALLING;
+    ground.action = kick_c;
+    double xc = 1.0;
+    double vc = 0.0;
+    AGREE(odestep_newton_event_loop_start_d(&loop, &odestep_velocity_verlet_d, &ground, 1, nullptr, &sys, &xc, &vc, 0.0,
+                                            0.01) == ODESTEP_OK);
+    auto a = [](double, const state&) { return state{-9.81}; };
+    auto g = [](double, const state& x, const state&) { return x[0]; };
+    auto kick = [](double, state&, state& v) {
+        v[0] = -0.8 * v[0];
+        return odestep::event_result::proceed;
+    };
+    auto cpp =
+        odestep::make_event_stepper(odestep::velocity_verlet<state>{},
+                                    odestep::watch(odestep::make_event<state>(g, odestep::direction::falling, kick)));
+    state x{1.0};
+    state v{0.0};
+    AGREE(cpp.start(0.0, 0.01, x, v) == odestep::status::ok);
+    int firings = 0;
+    for (int k = 0; k < 300; ++k) {
+        odestep_tick_d tick;
+        const odestep_status sc = odestep_newton_event_loop_tick_d(&loop, &sys, &xc, &vc, &tick);
+        const auto r = cpp.tick(a, x, v);
+        AGREE(static_cast<int>(sc) == static_cast<int>(r.status) && tick.t == r.t && tick.fired == r.fired);
+        for (std::size_t i = 0; i < tick.fired && i < r.fired; ++i) AGREE(tick.firings[i].t == r.firings[i].t);
+        AGREE(xc == x[0] && vc == v[0]);
+        firings += static_cast<int>(r.fired);
+    }
+    AGREE(firings >= 4);
+}
+
 }  // namespace
 
 int main() {
@@ -201,6 +245,7 @@ int main() {
     compare_first_order<odestep::adams_bashforth_moulton4<state3>>(&odestep_abm4_d, "abm4");
     compare_estimates();
     compare_events();
+    compare_newton_events();
     compare_newton<odestep::euler_cromer<state2>>(&odestep_euler_cromer_d, "euler_cromer");
     compare_newton<odestep::velocity_verlet<state2>>(&odestep_velocity_verlet_d, "velocity_verlet");
     compare_newton<odestep::forest_ruth<state2>>(&odestep_forest_ruth_d, "forest_ruth");

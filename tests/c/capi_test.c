@@ -611,6 +611,85 @@ static void test_event_nan(void) {
     CHECK_CLOSE(tick.t, 0.1, 1e-15);
 }
 
+/* The ball again as Newton's equations, x'' = -g, with velocity Verlet: its step is exact for a constant
+ * acceleration (x + v h + a h^2 / 2, v + a h), so the bounce times are the closed form's as above. */
+static void fall_d(double t, const double* x, double* a, void* ctx) {
+    (void)t;
+    (void)x;
+    (void)ctx;
+    a[0] = -gravity;
+}
+static double floor_d(double t, const double* x, const double* v, void* ctx) {
+    (void)t;
+    (void)v;
+    (void)ctx;
+    return x[0];
+}
+static odestep_event_result kick_d(double t, double* x, double* v, void* ctx) {
+    (void)t;
+    (void)x;
+    (void)ctx;
+    v[0] = -0.8 * v[0];
+    return ODESTEP_PROCEED;
+}
+static void test_newton_events(void) {
+    odestep_newton_event_loop_d loop;
+    const odestep_newton_d sys = {fall_d, NULL, 1};
+    const odestep_system_d first_order = {ball_d, NULL, 2};
+    odestep_newton_event_d ground;
+    double x = 1.0;
+    double v = 0.0;
+    const double t1 = sqrt(2.0 * 1.0 / gravity);
+    const double v1 = gravity * t1;
+    double expected = t1;
+    double gap = 2.0 * 0.8 * v1 / gravity;
+    int found = 0;
+    int k;
+    (void)memset(&ground, 0, sizeof ground);
+    ground.g = floor_d;
+    ground.direction = ODESTEP_FALLING;
+    ground.action = kick_d;
+    (void)first_order;
+    CHECK(odestep_newton_event_loop_start_d(&loop, &odestep_rk4_d, &ground, 1, NULL, &sys, &x, &v, 0.0, 0.01) ==
+          ODESTEP_INVALID_SETTING); /* a first-order method */
+    CHECK(odestep_newton_event_loop_tick_d(&loop, &sys, &x, &v, NULL) == ODESTEP_INVALID_TIME);
+    CHECK(odestep_newton_event_loop_start_d(&loop, &odestep_velocity_verlet_d, &ground, 1, NULL, &sys, &x, NULL, 0.0,
+                                            0.01) == ODESTEP_INVALID_SETTING);
+    CHECK(odestep_newton_event_loop_start_d(&loop, &odestep_velocity_verlet_d, &ground, 1, NULL, &sys, &x, &v, 0.0,
+                                            0.01) == ODESTEP_OK);
+    for (k = 0; k < 200; ++k) {
+        odestep_tick_d tick;
+        CHECK(odestep_newton_event_loop_tick_d(&loop, &sys, &x, &v, &tick) == ODESTEP_OK);
+        if (tick.fired > 0 && found < 3) {
+            CHECK_CLOSE(tick.firings[0].t, expected, 1e-9);
+            ++found;
+            expected += gap;
+            gap *= 0.8;
+        }
+    }
+    CHECK(found == 3 && odestep_newton_event_loop_firings_d(&loop, 0) == 3);
+    CHECK_CLOSE(odestep_newton_event_loop_time_d(&loop), 2.0, 1e-12);
+    /* a terminal event: stop at the floor, x = 0 there */
+    x = 1.0;
+    v = 0.0;
+    ground.action = NULL;
+    CHECK(odestep_newton_event_loop_start_d(&loop, &odestep_forest_ruth_d, &ground, 1, NULL, &sys, &x, &v, 0.0, 0.01) ==
+          ODESTEP_OK);
+    for (k = 0; k < 100; ++k) {
+        odestep_tick_d tick;
+        const odestep_status s = odestep_newton_event_loop_tick_d(&loop, &sys, &x, &v, &tick);
+        if (s != ODESTEP_OK) {
+            CHECK(s == ODESTEP_STOPPED_BY_EVENT && tick.event == 0);
+            CHECK_CLOSE(tick.t, t1, 1e-9);
+            CHECK_CLOSE(x, 0.0, 1e-9);
+            CHECK_CLOSE(v, -v1, 1e-9);
+            break;
+        }
+    }
+    CHECK(k == 45); /* t1 = 0.4515 s: in the 46th tick */
+    CHECK(odestep_newton_event_loop_rearm_d(&loop, &x, &v) == ODESTEP_OK);
+}
+
 int main(void) {
     test_rk4_decay();
     test_euler_decay();
@@ -631,6 +710,7 @@ int main(void) {
     test_terminal_event();
     test_event_bad_input();
     test_event_nan();
+    test_newton_events();
     (void)printf("c api tests: %d failed checks\n", check_failures);
     return check_failures == 0 ? 0 : 1;
 }
