@@ -115,7 +115,7 @@ struct owning_newton_adapter : stepper_defaults<state<T>> {
     const method_ops<T>* m = nullptr;
     alignas(stepper_t<T>) unsigned char storage[sizeof(stepper_t<T>::storage)] = {};
     status step(const c_accel<T>& a, state<T>& x, state<T>& v, T t, T dt) {
-        return m->step_newton(storage, a, x, v, t, dt, false);
+        return m->step_newton(storage, a, x, v, nullptr, t, dt, false);
     }
     void reset() noexcept { m->reset(storage); }
 };

@@ -97,8 +97,10 @@ struct method_ops {
     /// y' = f: a step of the object in storage, with up to two estimates (null: not asked for).
     status (*step)(void* storage, const c_rhs<T>& f, state<T>& y, T t, T dt, state<T>* e1, state<T>* e2);
     /// x'' = a: one step on its own (`kept` false: nothing reused from an earlier step), or a step of a loop
-    /// whose x object stays the same (`kept` true: velocity Verlet reuses the last acceleration).
-    status (*step_newton)(void* storage, const c_accel<T>& a, state<T>& x, state<T>& v, T t, T dt, bool kept);
+    /// whose x object stays the same (`kept` true: velocity Verlet reuses the last acceleration); with
+    /// `acc`, the caller-kept form of a first-same-as-last method (acc = a(t, x) in, a(t + dt, x) out).
+    status (*step_newton)(void* storage, const c_accel<T>& a, state<T>& x, state<T>& v, state<T>* acc, T t, T dt,
+                          bool kept);
 };
 
 }  // namespace odestep::capi
@@ -119,6 +121,11 @@ struct estimates_of : std::integral_constant<int, 0> {};
 template <class S>
 struct estimates_of<S, std::enable_if_t<S::error_estimate>>
     : std::integral_constant<int, static_cast<int>(S::error_estimates)> {};
+
+template <class S, class = void>
+struct caller_kept : std::false_type {};
+template <class S>
+struct caller_kept<S, std::enable_if_t<S::first_same_as_last>> : std::true_type {};
 
 template <class S, class = void>
 struct resettable : std::false_type {};
@@ -155,11 +162,19 @@ struct ops_of {
             return s.step(f, y, t, dt);
         }
     }
-    static status step_newton(void* storage, const c_accel<T>& a, state<T>& x, state<T>& v, T t, T dt, bool kept) {
+    static status step_newton(void* storage, const c_accel<T>& a, state<T>& x, state<T>& v, state<T>* acc, T t, T dt,
+                              bool kept) {
         if constexpr (S::system != system_form::newtonian) {
             return status::invalid_setting;
         } else {
             S& s = object(storage);
+            if (acc != nullptr) {
+                if constexpr (caller_kept<S>::value) {
+                    return s.step(a, x, v, *acc, t, dt);
+                } else {
+                    return status::invalid_setting;  // no acceleration to keep: not first same as last
+                }
+            }
             // A single step's x is a copy that lives as long as the call: a kept acceleration would be
             // matched by that copy's address alone, so it is forgotten first (the step evaluates afresh).
             if (!kept) reset(storage);
@@ -250,7 +265,7 @@ odestep_status step(stepper_t<T>* s, const typename c_types<T>::system* sys, T* 
 }
 
 template <class T>
-odestep_status step_newton(stepper_t<T>* s, const typename c_types<T>::newton* sys, T* x, T* v, T t, T dt) {
+odestep_status step_newton(stepper_t<T>* s, const typename c_types<T>::newton* sys, T* x, T* v, T* acc, T t, T dt) {
     const method_ops<T>* m = s != nullptr ? ops<T>(s) : nullptr;
     if (m == nullptr || sys == nullptr || sys->a == nullptr || x == nullptr || v == nullptr || !size_ok<T>(sys->n) ||
         !m->newtonian)
@@ -259,10 +274,14 @@ odestep_status step_newton(stepper_t<T>* s, const typename c_types<T>::newton* s
     if (checked != status::ok) return to_c(checked);
     state<T> xs = load(x, sys->n);
     state<T> vs = load(v, sys->n);
-    const status r = m->step_newton(s->storage.bytes, c_accel<T>{sys}, xs, vs, t, dt, false);
+    state<T> as{};
+    if (acc != nullptr) load_into(as, acc, sys->n);
+    const status r =
+        m->step_newton(s->storage.bytes, c_accel<T>{sys}, xs, vs, acc != nullptr ? &as : nullptr, t, dt, false);
     if (r == status::ok) {
         store(x, xs, sys->n);
         store(v, vs, sys->n);
+        if (acc != nullptr) store(acc, as, sys->n);
     }
     return to_c(r);
 }
@@ -289,7 +308,7 @@ struct newton_adapter : stepper_defaults<state<T>> {
     const method_ops<T>* m;
     void* storage;
     status step(const c_accel<T>& a, state<T>& x, state<T>& v, T t, T dt) const {
-        return m->step_newton(storage, a, x, v, t, dt, true);
+        return m->step_newton(storage, a, x, v, nullptr, t, dt, true);
     }
     void reset() const noexcept { m->reset(storage); }
 };

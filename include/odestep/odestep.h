@@ -201,9 +201,18 @@ odestep_status odestep_step_error_d(odestep_stepper_d* stepper, const odestep_sy
 
 /// One step of x'' = a(t, x): (x, v) <- (x, v)(t + dt), each of n components. Statuses as odestep_step_d
 /// (a first-order method gives ODESTEP_INVALID_SETTING). The single step evaluates a afresh (velocity
-/// Verlet: 2 evaluations); the loop odestep_integrate_newton_d reuses the last one (1 per step).
+/// Verlet: 2 evaluations); the loop odestep_integrate_newton_d and odestep_step_newton_kept_d reuse the
+/// last one (1 per step).
 odestep_status odestep_step_newton_d(odestep_stepper_d* stepper, const odestep_newton_d* system, double* x, double* v,
                                      double t, double dt);
+
+/// The caller-kept step of velocity Verlet (the first-same-as-last method): one evaluation of a per step.
+/// On entry acc[0 .. n-1] is a(t, x) (evaluate it once before the first step, and again after changing x
+/// by hand); on ODESTEP_OK it is a(t + dt, x) of the new x, the next step's entry value. On failure x, v and
+/// acc are unchanged. A method that keeps no acceleration (Euler-Cromer, Forest-Ruth) gives
+/// ODESTEP_INVALID_SETTING, as does a null acc.
+odestep_status odestep_step_newton_kept_d(odestep_stepper_d* stepper, const odestep_newton_d* system, double* x,
+                                          double* v, double* acc, double t, double dt);
 
 /// Integrates y' = f(t, y) from t0 to exactly t1 with steps of dt (t_i = t0 + i dt from an integer counter;
 /// the last step is shortened to end on t1, which an Adams method refuses with ODESTEP_STEP_MISMATCH before
@@ -452,6 +461,9 @@ odestep_status odestep_step_error_f(odestep_stepper_f* stepper, const odestep_sy
 /// odestep_step_newton_d in float.
 odestep_status odestep_step_newton_f(odestep_stepper_f* stepper, const odestep_newton_f* system, float* x, float* v,
                                      float t, float dt);
+/// odestep_step_newton_kept_d in float.
+odestep_status odestep_step_newton_kept_f(odestep_stepper_f* stepper, const odestep_newton_f* system, float* x,
+                                          float* v, float* acc, float t, float dt);
 /// odestep_integrate_d in float.
 odestep_status odestep_integrate_f(odestep_stepper_f* stepper, const odestep_system_f* system, float* y, float t0,
                                    float t1, float dt, odestep_observer_f observe, void* observer_ctx,

@@ -690,6 +690,40 @@ static void test_newton_events(void) {
     CHECK(odestep_newton_event_loop_rearm_d(&loop, &x, &v) == ODESTEP_OK);
 }
 
+/* Velocity Verlet with the acceleration kept by the caller: one evaluation a step, and the same x and v, bit
+ * for bit, as the loop (which keeps it itself). A method that keeps nothing refuses the form. */
+static int spring_calls = 0;
+static void counted_spring_d(double t, const double* x, double* a, void* ctx) {
+    (void)t;
+    (void)ctx;
+    ++spring_calls;
+    a[0] = -x[0];
+}
+static void test_verlet_kept(void) {
+    odestep_stepper_d s;
+    const odestep_newton_d sys = {counted_spring_d, NULL, 1};
+    double x = 1.0;
+    double v = 0.0;
+    double acc = 0.0;
+    double xl = 1.0;
+    double vl = 0.0;
+    int i;
+    CHECK(odestep_stepper_init_d(&s, &odestep_velocity_verlet_d) == ODESTEP_OK);
+    counted_spring_d(0.0, &x, &acc, NULL); /* a(t0, x0), once */
+    spring_calls = 0;
+    for (i = 0; i < 100; ++i) {
+        CHECK(odestep_step_newton_kept_d(&s, &sys, &x, &v, &acc, i * 0.1, 0.1) == ODESTEP_OK);
+    }
+    CHECK(spring_calls == 100);
+    CHECK(acc == -x);
+    CHECK(odestep_integrate_newton_d(&s, &sys, &xl, &vl, 0.0, 10.0, 0.1, NULL, NULL, NULL) == ODESTEP_OK);
+    CHECK(x == xl && v == vl);
+    CHECK(odestep_step_newton_kept_d(&s, &sys, &x, &v, NULL, 10.0, 0.1) == ODESTEP_INVALID_SETTING);
+    CHECK(odestep_stepper_init_d(&s, &odestep_euler_cromer_d) == ODESTEP_OK);
+    CHECK(odestep_step_newton_kept_d(&s, &sys, &x, &v, &acc, 10.0, 0.1) == ODESTEP_INVALID_SETTING);
+    CHECK(x == xl && v == vl);
+}
+
 int main(void) {
     test_rk4_decay();
     test_euler_decay();
@@ -711,6 +745,7 @@ int main(void) {
     test_event_bad_input();
     test_event_nan();
     test_newton_events();
+    test_verlet_kept();
     (void)printf("c api tests: %d failed checks\n", check_failures);
     return check_failures == 0 ? 0 : 1;
 }
