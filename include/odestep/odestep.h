@@ -291,7 +291,8 @@ typedef struct odestep_tick_d {
 } odestep_tick_d;
 
 /// The event loop's storage, caller-owned: a stepper, a copy of the events, the clock. Do not copy it once
-/// started. A loop that is zero-initialised or not started refuses ticks (ODESTEP_INVALID_TIME).
+/// started. A zero-initialised loop, or one whose start failed, refuses ticks (ODESTEP_INVALID_TIME); an
+/// uninitialised one must be zeroed or started first (its n would be garbage).
 typedef struct odestep_event_loop_d {
     size_t n;  ///< the state size, set by a successful start (0 before)
     union {
@@ -506,7 +507,8 @@ typedef struct odestep_tick_f {
 } odestep_tick_f;
 
 /// The event loop's storage, caller-owned: a stepper, a copy of the events, the clock. Do not copy it once
-/// started. A loop that is zero-initialised or not started refuses ticks (ODESTEP_INVALID_TIME).
+/// started. A zero-initialised loop, or one whose start failed, refuses ticks (ODESTEP_INVALID_TIME); an
+/// uninitialised one must be zeroed or started first (its n would be garbage).
 typedef struct odestep_event_loop_f {
     size_t n;  ///< the state size, set by a successful start (0 before)
     union {
