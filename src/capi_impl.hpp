@@ -215,8 +215,8 @@ bool size_ok(std::size_t n) noexcept {
 /// The caller's n values into a padded state: the first n copied, the others zero.
 template <class T>
 ODESTEP_INLINE void load_into(state<T>& s, const T* from, std::size_t n) noexcept {
-    for (std::size_t i = 0; i < n; ++i) s[i] = from[i];
-    for (std::size_t i = n; i < max_states; ++i) s[i] = T(0);
+    ODESTEP_UNROLL
+    for (std::size_t i = 0; i < max_states; ++i) s[i] = i < n ? from[i] : T(0);
 }
 template <class T>
 ODESTEP_INLINE state<T> load(const T* from, std::size_t n) noexcept {
@@ -226,7 +226,10 @@ ODESTEP_INLINE state<T> load(const T* from, std::size_t n) noexcept {
 }
 template <class T>
 ODESTEP_INLINE void store(T* to, const state<T>& s, std::size_t n) noexcept {
-    for (std::size_t i = 0; i < n; ++i) to[i] = s[i];
+    ODESTEP_UNROLL
+    for (std::size_t i = 0; i < max_states; ++i) {
+        if (i < n) to[i] = s[i];
+    }
 }
 
 /// The checks of a single step: t finite, dt finite and non-zero.
