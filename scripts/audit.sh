@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Firmware-discipline audit of odestep with arm-none-eabi-g++ (writes build/audit/, prints a markdown report):
 #
-#  1. examples/firmware_loop.cpp, linked with the bare board (toolchains/board/, no C library I/O) for
+#  1. examples/firmware_loop.cpp (and, 1b, examples/c_firmware.c on the C API), linked with the bare board (toolchains/board/, no C library I/O) for
 #     Cortex-M0+, M3, M4F and M33 with the allocator wrapped away (-Wl,--wrap=malloc,...: an allocation
 #     anywhere fails the link), holds no malloc/free/_sbrk/operator new/delete/__cxa_* symbol, and, being a
 #     float program, no __aeabi_d* double-precision routine; run under QEMU where the core has a board.
@@ -95,6 +95,59 @@ for core in cortex-m0plus cortex-m3 cortex-m4f cortex-m33; do
     else
       run="FAILED ($machine)"
       fail "$core: firmware_loop failed under QEMU: $(tail -1 "$out/firmware_loop-$core.out")"
+    fi
+  fi
+  echo "| $core | \`${cpu[*]}\` | $text | $data | $bss | ${runtime:-none} | ${doubles:-none} | $run |" >> "$report"
+done
+
+# --- 1b: the C firmware example (examples/c_firmware.c on the C API, odestep::odestep_c from src/) ---
+{
+  echo
+  echo "## 1b. C firmware image (examples/c_firmware.c, C99 on the C API: float RK4 plant + event loop, bare board)"
+  echo
+  echo "| core | flags | .text | .data | .bss | allocator / C++ runtime symbols | \`__aeabi_d*\` | QEMU run |"
+  echo "|---|---|---:|---:|---:|---|---|---|"
+} >> "$report"
+for core in cortex-m0plus cortex-m3 cortex-m4f cortex-m33; do
+  read -r -a cpu <<< "$(setting "$core" ODESTEP_TARGET_CPU_FLAGS)"
+  machine=$(setting "$core" ODESTEP_TARGET_QEMU_MACHINE)
+  script=$(setting "$core" ODESTEP_TARGET_LINKER_SCRIPT)
+  objects=$out/c_firmware-$core
+  image=$out/c_firmware-$core.elf
+  mkdir -p "$objects"
+  ok=1
+  for src in capi capi_float capi_events_float; do
+    arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" -Os -ffp-contract=off -c "$root/src/$src.cpp" \
+      -o "$objects/$src.o" 2>> "$objects.log" || ok=0
+  done
+  arm-none-eabi-gcc "${cpu[@]}" -std=c99 -Os -ffunction-sections -fdata-sections -Wall -Wextra -Wpedantic -Wconversion \
+    -Wshadow -Wdouble-promotion -Werror -I"$root/include" -c "$root/examples/c_firmware.c" -o "$objects/main.o" \
+    2>> "$objects.log" || ok=0
+  if ((ok == 1)); then
+    arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" -Os -DODESTEP_BOARD_BARE=1 "$objects"/*.o "$board/startup.cpp" \
+      "$board/syscalls.cpp" -nostartfiles -L"$board" -T"$board/$script" -Wl,--gc-sections "${no_alloc[@]}" -lm \
+      -o "$image" 2>> "$objects.log" || ok=0
+  fi
+  if ((ok == 0)); then
+    cat "$objects.log" >&2
+    fail "$core: c_firmware does not build or link without an allocator"
+    echo "| $core | \`${cpu[*]}\` | - | - | - | link FAILED | - | - |" >> "$report"
+    continue
+  fi
+  read -r text data bss _ < <(arm-none-eabi-size "$image" | awk 'NR == 2')
+  symbols=$(arm-none-eabi-nm "$image" | awk '{print $NF}')
+  runtime=$(grep -E "$forbidden" <<< "$symbols" | tr '\n' ' ')
+  doubles=$(grep -E '^__aeabi_d' <<< "$symbols" | tr '\n' ' ')
+  [[ -z "$runtime" ]] || fail "$core: c_firmware contains $runtime"
+  [[ -z "$doubles" ]] || fail "$core: the float c_firmware contains $doubles"
+  run=-
+  if [[ -n "$machine" && $have_qemu == 1 ]]; then
+    if timeout 60 qemu-system-arm -M "$machine" -nographic -monitor none \
+         -semihosting-config enable=on,target=native -kernel "$image" > "$out/c_firmware-$core.out" 2>&1; then
+      run="ok ($machine)"
+    else
+      run="FAILED ($machine)"
+      fail "$core: c_firmware failed under QEMU: $(tail -1 "$out/c_firmware-$core.out")"
     fi
   fi
   echo "| $core | \`${cpu[*]}\` | $text | $data | $bss | ${runtime:-none} | ${doubles:-none} | $run |" >> "$report"

@@ -9,7 +9,9 @@ set(found "")
 foreach(line IN LISTS lines)
   # objdump -t: address, flags, section, size, name. Variables are the object ('O') symbols; section
   # symbols ('d') appear for every section, including those a sanitizer adds, and are not state.
-  if(line MATCHES " O[ \t]+\\.(data|bss|tbss|tdata)(\\.[^ \t]*)?[ \t]")
+  # .data.rel.ro is read-only once relocated (RELRO): a constant that holds addresses (the C API's method
+  # tables, in a position-independent build) lives there, not mutable state.
+  if(line MATCHES " O[ \t]+\\.(data|bss|tbss|tdata)(\\.[^ \t]*)?[ \t]" AND NOT line MATCHES " O[ \t]+\\.data\\.rel\\.ro")
     string(APPEND found "${line}\n")
   endif()
 endforeach()

@@ -12,9 +12,12 @@ consumer="$src/tests/package/consumer"
 
 cmake -S "$src" -B "$work/odestep-build" -DCMAKE_CXX_COMPILER="$cxx" -DODESTEP_BUILD_TESTS=OFF \
       -DODESTEP_BUILD_EXAMPLES=OFF -DODESTEP_INSTALL=ON >/dev/null
+cmake --build "$work/odestep-build" >/dev/null  # the C API's static library (odestep::odestep_c)
 cmake --install "$work/odestep-build" --prefix "$work/prefix" >/dev/null
 test -f "$work/prefix/include/odestep/odestep.hpp"
 test -f "$work/prefix/share/cmake/odestep/odestepConfig.cmake"
+test -f "$work/prefix/include/odestep/odestep.h"
+ls "$work"/prefix/lib*/libodestep_c.a >/dev/null
 
 for mode in find_package add_subdirectory FetchContent; do
   build="$work/$mode"
@@ -22,6 +25,7 @@ for mode in find_package add_subdirectory FetchContent; do
         -DODESTEP_SOURCE="$src" -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
   cmake --build "$build" >/dev/null
   "$build/consumer"
+  "$build/c_consumer"
   if [ "$mode" != find_package ] && cmake --build "$build" --target help | grep -q odestep_tests; then
     echo "FAIL: $mode builds odestep's tests although odestep is not the top-level project"
     exit 1

@@ -1,0 +1,6 @@
+// odestep C API, double: the methods and the functions of include/odestep/odestep.h with the suffix _d.
+#include "capi_impl.hpp"
+
+#define ODESTEP_CAPI_T double
+#define ODESTEP_CAPI_NAME(name) name##_d
+#include "capi_precision.inc"

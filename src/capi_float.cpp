@@ -1,0 +1,6 @@
+// odestep C API, float: the methods and the functions of include/odestep/odestep.h with the suffix _f.
+#include "capi_impl.hpp"
+
+#define ODESTEP_CAPI_T float
+#define ODESTEP_CAPI_NAME(name) name##_f
+#include "capi_precision.inc"
