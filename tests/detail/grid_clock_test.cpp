@@ -137,3 +137,19 @@ TEST_CASE("grid clock: the split 64-bit count conversion (a 32-bit target's) is 
     CHECK(odestep::detail::count_halves<float>(16777217u) == static_cast<float>(16777217u));
     static_assert(std::is_same_v<decltype(odestep::integrate_result<double>{}.steps), std::uint64_t>);
 }
+
+TEST_CASE("grid clock: the split T-to-count conversion (a 32-bit target's, no double in float) truncates exactly") {
+    // Expected: the whole part of x, written out by hand (x are exactly representable in T).
+    using odestep::detail::count_of_halves;
+    CHECK(count_of_halves(0.0f) == 0u);
+    CHECK(count_of_halves(999999.75f) == 999999u);
+    CHECK(count_of_halves(4294967040.0f) == 4294967040u);  // the largest float below 2^32
+    CHECK(count_of_halves(4294967296.0f) == std::uint64_t{1} << 32);
+    CHECK(count_of_halves(12884901888.0f) == std::uint64_t{3} << 32);                 // 3 * 2^32
+    CHECK(count_of_halves(4611686018427387904.0f / 2.0f) == std::uint64_t{1} << 61);  // 2^61
+    CHECK(count_of_halves(4294967297.5) == (std::uint64_t{1} << 32) + 1);             // double: 2^32 + 1.5
+    CHECK(count_of_halves(1099511627776.25) == std::uint64_t{1} << 40);               // 2^40 + 0.25
+    CHECK(count_of_halves(3298534883335.0) == (std::uint64_t{3} << 40) + 7);
+    // Against the one conversion, over a sweep of doubles below 2^62 (the host's conversion is exact).
+    for (double x = 0.5; x < 4.0e18; x = x * 1.37 + 0.25) CHECK(count_of_halves(x) == static_cast<std::uint64_t>(x));
+}

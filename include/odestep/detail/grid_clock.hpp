@@ -40,6 +40,31 @@ ODESTEP_INLINE constexpr T count_value(step_count n) noexcept {
     }
 }
 
+/// The whole part of a T in [0, 2^62) as a step count, converted as two 32-bit halves: the high half is
+/// trunc(x / 2^32), and x - hi 2^32 is exact (both are multiples of x's ULP once x >= 2^32) and below 2^32.
+template <class T>
+ODESTEP_INLINE constexpr step_count count_of_halves(T x) noexcept {
+    constexpr T two32 = T(4294967296.0L);  // 2^32
+    if (ODESTEP_UNLIKELY(!(x < two32))) {
+        const auto hi = static_cast<std::uint32_t>(x / two32);
+        const auto lo = static_cast<std::uint32_t>(x - static_cast<T>(hi) * two32);
+        return (static_cast<step_count>(hi) << 32) + lo;
+    }
+    return static_cast<std::uint32_t>(x);
+}
+
+/// The whole part of a T in [0, 2^62) as a step count. Where std::size_t has fewer than 64 bits a T to 64-bit
+/// integer conversion is a library call, and libgcc's for float (__fixunssfdi) converts to double first,
+/// which would put double arithmetic in a float program: there it is count_of_halves.
+template <class T>
+ODESTEP_INLINE constexpr step_count count_of(T x) noexcept {
+    if constexpr (sizeof(std::size_t) >= sizeof(step_count)) {
+        return static_cast<step_count>(x);
+    } else {
+        return count_of_halves(x);
+    }
+}
+
 /// The times of a fixed-step run: t_n = t0 + n dt, computed from the integer n every time and never as a
 /// running sum (in float, t += 1e-3 reaches 991.14 instead of 1000 after 10^6 steps).
 template <class T>
@@ -115,7 +140,7 @@ constexpr status plan_run(T t0, T t1, T dt, grid_plan<T>& plan) noexcept {
     // The quotient is rounded, and so is each t_n: move n to the last grid time that is not past t1 by
     // more than the rounding. Each correction is at most a step or two where the grid resolves dt; the
     // caps keep the loops bounded where it does not (there any n is right to the grid's rounding).
-    step_count n = static_cast<step_count>(ratio);
+    step_count n = count_of(ratio);
     for (int k = 0; k < 4 && n > 0 && beyond(n) > rounding; ++k) --n;
     for (int k = 0; k < 4 && !(beyond(n + 1) > rounding); ++k) ++n;
     // t_n reaches t1 to the grid's rounding: n steps, the last one dt; otherwise one more, shortened.
