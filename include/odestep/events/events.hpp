@@ -43,7 +43,10 @@ inline constexpr record_action record{};
 /// Settings, all optional (the defaults are what most problems need):
 ///   - tolerance: the width of the time bracket the event is located to. Zero (the default), or anything
 ///     smaller than a few ULPs, means a few ULPs: 4 eps (|t| + |dt|) in T, relative, so that it suits
-///     float and double, tiny and huge t alike.
+///     float and double, tiny and huge t alike. A crossing located within the tolerance after the event's
+///     last firing is that firing's own (an action that moved the state but not g: it fires once), and one
+///     within the tolerance after the start (or a rearm) counts as a zero there: it does not fire (so a run
+///     begun at a stopped_by_event state goes on).
 ///   - band: after firing, the event re-arms only once |g| > band has been seen at a step's end (a probe,
 ///     or the event's own location point): the dead band of a crossing. Zero by default (re-arms as soon as
 ///     g leaves zero).
@@ -93,13 +96,16 @@ constexpr event<State, G, Action> make_event(G g, direction d, Action action = A
 }
 
 /// Settings of the event loop, the same for all its events; they bound the work of one step (see
-/// max_rhs_evals_per_step).
+/// max_rhs_evals_per_step). Limits whose bounds do not fit std::size_t (a huge probe count, cap or firing
+/// limit) are refused with status::invalid_setting before anything is touched.
 struct event_limits {
     /// Cap on the root finder's re-steps for one event location; zero means the finder's own worst case from
     /// dt down to the default tolerance (Brent: 102 in double, 44 in float; bisection: 50 and 21),
     /// so that it always converges. Smooth event functions need 4 to 10.
     std::size_t max_iterations = 0;
-    /// Firings allowed inside one step; one more is reported as status::event_limit.
+    /// Firings allowed inside one step; one more is reported as status::event_limit. It also caps the
+    /// locations in one step, whether they fire or not (an event function that is not a pure function of
+    /// (t, y), a sensor, can show a crossing that location does not find again): every call is bounded.
     std::size_t max_firings_per_step = 8;
     /// Interior probes per step: each is a re-step to k dt / (probes + 1), where g is evaluated too, so that
     /// a g that crosses zero twice inside one step is seen. Without probes such a pair is missed (g has the
@@ -146,34 +152,76 @@ constexpr std::size_t event_iterations(event_limits limits) noexcept {
     return limits.max_iterations != 0 ? limits.max_iterations
                                       : Finder::worst_case_evaluations(T(1), T(4) * std::numeric_limits<T>::epsilon());
 }
+
+// The bounds' arithmetic saturates at SIZE_MAX instead of wrapping: a bound that does not fit std::size_t is
+// SIZE_MAX, and limits with such a bound are refused (status::invalid_setting).
+constexpr std::size_t count_max = std::numeric_limits<std::size_t>::max();
+constexpr std::size_t sat_add(std::size_t a, std::size_t b) noexcept { return a > count_max - b ? count_max : a + b; }
+constexpr std::size_t sat_mul(std::size_t a, std::size_t b) noexcept {
+    return b != 0 && a > count_max / b ? count_max : a * b;
+}
 }  // namespace detail
 
 /// The most right-hand-side evaluations (accelerations, for Newton's equations) one step with events can
 /// cost, for a stepper whose own step costs at most Stepper::rhs_evals_per_step:
 ///   S [ (1 + F)(1 + P) + F E C ]
 /// with F firings per step, P probes, E events and C root-finder iterations: the step and its probes, once
-/// more after each firing that changed the state (the rest of the step from the event), and at most C
-/// re-steps for each event located for each firing. With no event firing and no probes it is S: the step
-/// itself, nothing more.
+/// more after each location whose action ran (the rest of the step from the event), and at most C re-steps
+/// for each event narrowed in each location (a step makes at most F locations, whether they fire or not).
+/// With no event firing and no probes it is S: the step itself, nothing more. SIZE_MAX when the bound does
+/// not fit std::size_t (such limits are refused with status::invalid_setting).
 template <class Stepper, class Finder = default_root_finder,
           class T = typename std::remove_reference_t<Stepper>::value_type>
 constexpr std::size_t max_rhs_evals_per_step(std::size_t events, event_limits limits = {}) noexcept {
+    using detail::sat_add;
+    using detail::sat_mul;
     const std::size_t s = std::remove_reference_t<Stepper>::rhs_evals_per_step;
     const std::size_t f = limits.max_firings_per_step;
     const std::size_t p = limits.probes;
-    return s * ((1 + f) * (1 + p) + f * events * detail::event_iterations<T, Finder>(limits));
+    return sat_mul(s, sat_add(sat_mul(sat_add(1, f), sat_add(1, p)),
+                              sat_mul(sat_mul(f, events), detail::event_iterations<T, Finder>(limits))));
 }
 
 /// The most evaluations of event functions one step can cost (all events together):
-///   E (1 + F)(1 + P) + F (C + E (E + 1)).
-/// With no event firing and no probes it is E: one per event, at the step's end.
+///   E (1 + F)(1 + P) + F E (C + E + 2).
+/// With no event firing and no probes it is E: one per event, at the step's end. SIZE_MAX when it does not
+/// fit std::size_t.
 template <class T, class Finder = default_root_finder>
 constexpr std::size_t max_g_evals_per_step(std::size_t events, event_limits limits = {}) noexcept {
+    using detail::sat_add;
+    using detail::sat_mul;
     const std::size_t f = limits.max_firings_per_step;
     const std::size_t p = limits.probes;
-    return events * (1 + f) * (1 + p) +
-           f * (events * detail::event_iterations<T, Finder>(limits) + events * (events + 1));
+    const std::size_t c = detail::event_iterations<T, Finder>(limits);
+    return sat_add(sat_mul(events, sat_mul(sat_add(1, f), sat_add(1, p))),
+                   sat_mul(sat_mul(f, events), sat_add(c, sat_add(events, 2))));
 }
+
+/// The most right-hand-side evaluations one `event_stepper::tick` can cost: two steps' worth (a tick after
+/// one that ended early first completes the rest of that tick's period, then takes its own; see
+/// event_stepper). SIZE_MAX when it does not fit std::size_t.
+template <class Stepper, class Finder = default_root_finder,
+          class T = typename std::remove_reference_t<Stepper>::value_type>
+constexpr std::size_t max_rhs_evals_per_tick(std::size_t events, event_limits limits = {}) noexcept {
+    return detail::sat_mul(2, max_rhs_evals_per_step<Stepper, Finder, T>(events, limits));
+}
+
+/// The most event-function evaluations one `event_stepper::tick` can cost: two steps' worth.
+template <class T, class Finder = default_root_finder>
+constexpr std::size_t max_g_evals_per_tick(std::size_t events, event_limits limits = {}) noexcept {
+    return detail::sat_mul(2, max_g_evals_per_step<T, Finder>(events, limits));
+}
+
+namespace detail {
+// Limits are valid when the per-tick bounds (twice the per-step ones) fit std::size_t: then nothing in the
+// loop's counting wraps either (probes + 1, the bounds themselves).
+template <class Stepper, class Finder, class T>
+constexpr status limits_status(std::size_t events, event_limits limits) noexcept {
+    const bool fits = max_rhs_evals_per_tick<Stepper, Finder, T>(events, limits) < count_max &&
+                      max_g_evals_per_tick<T, Finder>(events, limits) < count_max;
+    return fits ? status::ok : status::invalid_setting;
+}
+}  // namespace detail
 
 /// One firing: which event (its index in the set) and when.
 template <class T>
@@ -233,6 +281,9 @@ template <class T>
 struct event_memory {
     T g = T(0);     // g at the last evaluation point: crossings are measured from it
     T last = T(0);  // time of the last firing
+    // The end of the last firing's bracket (or the time of start or rearm): a crossing located within the
+    // event's tolerance after it is that firing's own crossing (or a zero at the start) and does not fire.
+    T until = T(0);
     std::size_t fired = 0;
     bool armed = false;  // may fire: g has been seen away from zero (beyond the band, after the dead time)
 };
@@ -297,7 +348,7 @@ public:
         if (!settings_valid(set)) return status::invalid_tolerance;
         values g{};
         if (!evaluate_all(set, t0, y, g)) return status::non_finite_event;
-        for (std::size_t i = 0; i < E; ++i) memory[i] = event_memory<T>{g[i], t0, 0, false};
+        for (std::size_t i = 0; i < E; ++i) memory[i] = event_memory<T>{g[i], t0, t0, 0, false};
         rearm(set, t0, g);
         return status::ok;
     }
@@ -312,6 +363,7 @@ public:
         if (!evaluate_all(set, t, y, g)) return status::non_finite_event;
         for (std::size_t i = 0; i < E; ++i) {
             memory[i].g = g[i];
+            memory[i].until = t;
             memory[i].armed = false;
         }
         rearm(set, t, g);
@@ -357,37 +409,72 @@ public:
     }
 
     // The rest of advance, after settle returned false (start and g as step and settle left them): every
-    // crossing inside the step located, fired and acted on; after an action that changed the state, the rest
-    // of the step again from the event.
+    // crossing inside the step located, fired and acted on; after a callable action, the rest of the step
+    // again from the event. Any outcome but ok leaves y somewhere other than the regular step's end: the
+    // stepper is reset then (its history, or a kept acceleration, belongs to that step).
     template <class Stepper, class System, class Sink>
     ODESTEP_EVENTS_NOINLINE step_outcome<T> advance_rest(Stepper& stepper, System& f, set_type& set, refs y,
                                                          pack& start, values g_end, T t_s, T h, T t_end, Sink sink) {
+        const step_outcome<T> o = scan(stepper, f, set, y, start, g_end, t_s, h, t_end, sink);
+        if (o.code != status::ok) reset_if_any(stepper);
+        return o;
+    }
+
+private:
+    // The time of the point s into a step from t_s (s in [0, h]): t_s + s, except that the step's end is
+    // t_end itself (from the caller's counter, which t_s + h can miss by an ULP: the step's end is then read
+    // at one time by the quiet test and at another by the location, and a crossing between the two is seen
+    // and not found), and no time lies past t_end.
+    static T time_at(T t_s, T s, T h, T t_end) noexcept {
+        if (s == h) return t_end;
+        const T t = t_s + s;
+        return (h > T(0) ? t > t_end : t < t_end) ? t_end : t;
+    }
+
+    template <class Stepper, class System, class Sink>
+    step_outcome<T> scan(Stepper& stepper, System& f, set_type& set, refs y, pack& start, values g_end, T t_s, T h,
+                         T t_end, Sink& sink) {
         status s = status::ok;
         std::size_t fired_here = 0;
+        std::size_t located = 0;  // locations in this step, firing or not: at most max_firings_per_step
         bool partial = false;
-        const std::size_t pieces = set.limits.probes + 1;
+        bool acted = false;
+        const std::size_t pieces = set.limits.probes + 1;  // (the limits are checked: no wrap)
+        const auto at = [&](T u) { return time_at(t_s, u, h, t_end); };
+        const auto outcome = [&](status code, T t, std::size_t event) {
+            step_outcome<T> o{code, t, fired_here, event};
+            o.acted = acted;
+            return o;
+        };
+        // Back to the last good state, at t_good.
+        const auto fail = [&](const pack& good, T t_good, status code) {
+            store(y, good);
+            return outcome(code, t_good, no_event);
+        };
         // The states of the scan: lo_state at lo (also the state before an action, once lo is no longer
         // needed), hi_state at a probe, a_state and b_state at the ends of a location's bracket.
         pack lo_state;
         pack hi_state;
         pack a_state;
         pack b_state;
-        // One pass per restart: the first, and one after each firing that changed the state.
+        // One pass per restart: the first, and one after each location whose action ran.
         for (;;) {
             if (partial) {
                 load(y, start);
                 s = call_step(stepper, f, y, t_s, h, seq{});
-                if (s != status::ok) return {s, t_s, fired_here, no_event};
+                if (s != status::ok) return outcome(s, t_s, no_event);
                 evaluate(set, t_end, y, g_end);
             }
-            if (!finite_values(g_end)) return fail(y, start, t_s, status::non_finite_event, fired_here);
+            if (!finite_values(g_end)) return fail(start, t_s, status::non_finite_event);
             // Nothing crossed and no probes: remember the values and go on.
             if (pieces == 1 && !any_crossing(set, g_end)) {
                 for (std::size_t i = 0; i < E; ++i) memory[i].g = g_end[i];
                 rearm(set, t_end, g_end);
                 if (partial) reset_if_any(stepper);
-                return {status::ok, t_end, fired_here, no_event};
+                return outcome(status::ok, t_end, no_event);
             }
+            const bool forward = h > T(0);
+            const T default_tolerance = T(4) * std::numeric_limits<T>::epsilon() * (abs_value(t_s) + abs_value(h));
             // Scan (0, h] piece by piece (the pieces end at the probes and at h). lo is where the events'
             // memory was last updated; lo_state the state there.
             T lo = T(0);
@@ -406,57 +493,75 @@ public:
                     hi_refs = pointers(hi_state);
                     reset_if_any(scratch);
                     const status ps = call_step(scratch, f, hi_refs, t_s, hi, seq{});
-                    if (ps != status::ok) return fail(y, lo_state, t_s + lo, ps, fired_here);
-                    if (!evaluate_all(set, t_s + hi, hi_refs, g_hi))
-                        return fail(y, lo_state, t_s + lo, status::non_finite_event, fired_here);
+                    if (ps != status::ok) return fail(lo_state, at(lo), ps);
+                    if (!evaluate_all(set, at(hi), hi_refs, g_hi))
+                        return fail(lo_state, at(lo), status::non_finite_event);
                 }
-                // Every firing inside (lo, hi].
+                // Every firing inside (lo, hi]. Each pass of this loop is one location, and a step makes at
+                // most max_firings_per_step of them, whether they fire or not: with an event function that is
+                // not a pure function of (t, y) (a sensor), a crossing seen at hi can vanish when location
+                // reads g again, and without this count the loop would start over for ever.
                 for (;;) {
                     if (!any_crossing(set, g_hi)) break;
-                    if (fired_here >= set.limits.max_firings_per_step)
-                        return fail(y, lo_state, t_s + lo, status::event_limit, fired_here);
+                    if (located >= set.limits.max_firings_per_step) return fail(lo_state, at(lo), status::event_limit);
+                    ++located;
                     // Locate the earliest crossing: [a, b] with b - a within tolerance.
                     T a = lo;
                     T b = hi;
                     load(hi_refs, b_state);
                     values g_b = g_hi;
-                    const status ls = locate(scratch, f, set, start, t_s, h, lo, lo_state, a, b, a_state, b_state, g_b);
-                    if (ls != status::ok) return fail(y, lo_state, t_s + lo, ls, fired_here);
-                    // Fire, in the order given, every event that has crossed by b, at t* = t_s + a with
-                    // the integrator's state there. From here on lo_state is free: it holds the state before
-                    // each round of actions.
-                    const T t_star = t_s + a;
+                    const status ls =
+                        locate(scratch, f, set, start, t_s, h, t_end, lo, lo_state, a, b, a_state, b_state, g_b);
+                    if (ls != status::ok) return fail(lo_state, at(lo), ls);
+                    const T t_star = at(a);
+                    const T t_b = at(b);
+                    // Every g at the event's state, so that the state before an action (the roll-back target
+                    // if the action fails) is one where every g is finite. At lo they are the memory's.
                     values g_cross = g_b;
-                    bool changed = false;
-                    // An action may move the state across (or onto) another event's zero: that event fires
-                    // too, at the same time, after it. Each round fires at least one event, so the firing
-                    // limit bounds the rounds.
+                    if constexpr (!actions_keep_state) {
+                        if (a == lo) {
+                            for (std::size_t i = 0; i < E; ++i) g_cross[i] = memory[i].g;
+                        } else if (!evaluate_all(set, t_star, pointers(a_state), g_cross)) {
+                            return fail(lo_state, at(lo), status::non_finite_event);
+                        }
+                    }
+                    // Fire, in the order given, every event that has crossed by b, at t* with the integrator's
+                    // state there. From here on lo_state is free: it holds the state before each round of
+                    // actions. An action may move the state across (or onto) another event's zero: that event
+                    // fires too, at the same time, after it. Each round fires at least one event, and each
+                    // event fires once in a location: at most E rounds.
+                    bool acted_here = false;
+                    values after = g_b;  // the values the crossings are measured to
                     for (;;) {
                         if constexpr (!actions_keep_state) lo_state = a_state;
                         std::size_t stop_index = no_event;
                         bool limited = false;
-                        fire_all(set, t_star, pointers(a_state), g_cross, sink, fired_here, stop_index, limited);
+                        bool acted_now = false;
+                        fire_all(set, t_star, t_b, forward, default_tolerance, pointers(a_state), after, sink,
+                                 fired_here, stop_index, limited, acted_now);
+                        acted = acted || acted_now;
                         if constexpr (!actions_keep_state) {
-                            if (!all_finite_pack(a_state))
-                                return fail(y, lo_state, t_star, status::non_finite, fired_here);
+                            if (!all_finite_pack(a_state)) return fail(lo_state, t_star, status::non_finite);
                         }
                         if (stop_index != no_event || limited) {
                             store(y, a_state);
-                            return {limited ? status::event_limit : status::stopped_by_event, t_star, fired_here,
-                                    stop_index};
+                            return outcome(limited ? status::event_limit : status::stopped_by_event, t_star,
+                                           stop_index);
                         }
                         if constexpr (actions_keep_state) {
                             break;
                         } else {
-                            if (same(a_state, lo_state)) break;
-                            changed = true;
+                            if (!acted_now) break;
+                            acted_here = true;
                             if (!evaluate_all(set, t_star, pointers(a_state), g_cross))
-                                return fail(y, lo_state, t_star, status::non_finite_event, fired_here);
+                                return fail(lo_state, t_star, status::non_finite_event);
+                            after = g_cross;
                             if (!any_crossing(set, g_cross)) break;
                         }
                     }
-                    if (changed) {
-                        // The actions changed the state: the rest of the step starts again from it.
+                    if (acted_here) {
+                        // An action ran (it may have changed the state, or only a parameter the right-hand
+                        // side reads): the rest of the step starts again from the event.
                         store(y, a_state);
                         for (std::size_t i = 0; i < E; ++i) memory[i].g = g_cross[i];
                         rearm(set, t_star, g_cross);
@@ -466,32 +571,32 @@ public:
                         restarted = true;
                         break;
                     }
-                    // Nothing changed: the step's own result stands; go on scanning from b.
+                    // No action ran (record events only, or nothing fired): the step's own result stands; go
+                    // on scanning from b.
                     lo = b;
                     lo_state = b_state;
                     for (std::size_t i = 0; i < E; ++i) memory[i].g = g_b[i];
-                    rearm(set, t_s + b, g_b);
+                    rearm(set, t_b, g_b);
                 }
                 if (restarted) break;
-                lo = hi;
-                load(hi_refs, lo_state);
-                for (std::size_t i = 0; i < E; ++i) memory[i].g = g_hi[i];
-                rearm(set, t_s + hi, g_hi);
+                if (!(lo == hi)) {  // (a location that ended at hi left the memory with the values read there)
+                    lo = hi;
+                    load(hi_refs, lo_state);
+                    for (std::size_t i = 0; i < E; ++i) memory[i].g = g_hi[i];
+                    rearm(set, at(hi), g_hi);
+                }
             }
             if (!restarted) {
                 // A pass that began at an event took a partial step: a history built on it would not fit
                 // the next regular step, so a multistep method starts afresh.
                 if (partial) reset_if_any(stepper);
-                return {status::ok, t_end, fired_here, no_event};
+                return outcome(status::ok, t_end, no_event);
             }
-            if (h == T(0))
-                return {status::ok, t_end, fired_here, no_event};  // the event was at the step's end
-                                                                   // (to rounding): y is already there
+            if (h == T(0)) return outcome(status::ok, t_end, no_event);  // the event was at the step's end
             partial = true;
         }
     }
 
-private:
     using seq = std::make_index_sequence<K>;
     using events_seq = std::index_sequence_for<Events...>;
 
@@ -568,11 +673,6 @@ private:
     template <class A>
     static bool finite_values(const A& a) noexcept {
         return all_finite(a);
-    }
-    // Back to the last good state, at t_good.
-    static step_outcome<T> fail(const refs& y, const pack& good, T t_good, status s, std::size_t fired) {
-        store(y, good);
-        return {s, t_good, fired, no_event};
     }
 
     static constexpr bool valid_setting(T v) noexcept { return is_finite(v) && !(v < T(0)); }
@@ -675,7 +775,7 @@ private:
     // a copy of the stepper, reset before each), so the event state is the integrator's own. On return [a, b]
     // brackets the earliest crossing, a_state and b_state are the states there and g_b all g at b.
     template <class Stepper, class System>
-    ODESTEP_INLINE status locate(Stepper& trial, System& f, set_type& set, const pack& start, T t_s, T h, T lo,
+    ODESTEP_INLINE status locate(Stepper& trial, System& f, set_type& set, const pack& start, T t_s, T h, T t_end, T lo,
                                  const pack& lo_state, T& a, T& b, pack& a_state, pack& b_state, values& g_b) {
         const T default_tolerance = T(4) * std::numeric_limits<T>::epsilon() * (abs_value(t_s) + abs_value(h));
         const std::size_t cap = event_iterations<T, Finder>(set.limits);
@@ -698,7 +798,7 @@ private:
             tolerance = max_value(tolerance, default_tolerance);
             // The bracket's ends move as the finder narrows it: a_state (from lo_state) and b_state follow.
             a_state = lo_state;
-            auto fn = [&, sign_h, side, c, t_s](T u) -> T {  // (the scalars by value: they stay in registers here)
+            auto fn = [&, sign_h, side, c, t_s, h, t_end](T u) -> T {  // (the scalars by value: in registers)
                 const T s_trial = sign_h * u;
                 trial_state = start;
                 reset_if_any(trial);
@@ -707,7 +807,7 @@ private:
                     failure = st;
                     return std::numeric_limits<T>::quiet_NaN();
                 }
-                const T value = side * evaluate_one(set, c, t_s + s_trial, pointers(trial_state));
+                const T value = side * evaluate_one(set, c, time_at(t_s, s_trial, h, t_end), pointers(trial_state));
                 if (!is_finite(value)) {
                     failure = status::non_finite_event;
                 } else if (value < T(0)) {
@@ -722,31 +822,44 @@ private:
             if (r.failed) return failure != status::ok ? failure : status::non_finite_event;
             a = sign_h * r.a;
             b = sign_h * r.b;
-            if (!evaluate_all(set, t_s + b, pointers(b_state), g_b)) return status::non_finite_event;
+            if (!evaluate_all(set, time_at(t_s, b, h, t_end), pointers(b_state), g_b)) return status::non_finite_event;
         }
         return status::ok;
     }
 
-    // Fires, in order, the armed events that have crossed by b (g_b), at t* on the state y_star.
+    // Fires, in order, the armed events that have crossed by b (g_b), at t* on the state y_star; t_b is the
+    // time of b, the end of the bracket. A crossing located within the event's tolerance after its `until`
+    // (its last firing's bracket end, or the start or rearm) is that firing's own (an action that moved the
+    // state but not g) or a zero at the start (a run begun at a stopped_by_event state): it does not fire.
+    // acted: a callable action ran (and did not stop).
     template <class Sink>
-    void fire_all(set_type& set, T t_star, const refs& y_star, const values& g_b, Sink& sink, std::size_t& fired_here,
-                  std::size_t& stop_index, bool& limited) {
+    void fire_all(set_type& set, T t_star, T t_b, bool forward, T default_tolerance, const refs& y_star,
+                  const values& g_b, Sink& sink, std::size_t& fired_here, std::size_t& stop_index, bool& limited,
+                  bool& acted) {
         for_each(set, [&](auto index, auto& e) {
+            using Ev = std::remove_reference_t<decltype(e)>;
             constexpr std::size_t i = decltype(index)::value;
             if (stop_index != no_event || limited) return;
-            if (!(memory[i].armed && crosses(e.direction, memory[i].g, g_b[i]))) return;
+            event_memory<T>& m = memory[i];
+            if (!(m.armed && crosses(e.direction, m.g, g_b[i]))) return;
+            const T tolerance = max_value(e.tolerance, default_tolerance);
+            if (forward ? !(t_star > m.until + tolerance) : !(t_star < m.until - tolerance)) return;
             if (fired_here >= set.limits.max_firings_per_step) {
                 limited = true;
                 return;
             }
-            event_memory<T>& m = memory[i];
             m.armed = false;
             all_armed = false;
             m.fired += 1;
             m.last = t_star;
+            m.until = t_b;
             sink(fired_here, i, t_star);
             fired_here += 1;
-            if (call_action<State>(e.action, t_star, y_star, seq{}) == event_result::stop) stop_index = i;
+            if (call_action<State>(e.action, t_star, y_star, seq{}) == event_result::stop) {
+                stop_index = i;
+            } else if constexpr (!keeps_state_v<Ev>) {
+                acted = true;
+            }
         });
     }
 };
@@ -793,6 +906,8 @@ event_integrate_result<T, Set::size> drive_events(Stepper& stepper, System& f, S
         return r;
     };
     if (planned == status::ok) planned = fits_plan<Stepper>(plan);
+    if (planned == status::ok)
+        planned = limits_status<Stepper, typename Set::finder, value_type_t<State>>(Set::size, set.limits);
     if (planned != status::ok) return finish(planned, plan.clock.t0, 0, no_event);
     const std::array<State*, K> y{&y0, &ys...};
     const status started = engine.begin(set, plan.clock.t0, y);
@@ -813,9 +928,11 @@ event_integrate_result<T, Set::size> drive_events(Stepper& stepper, System& f, S
 /// event_result::stop) ends the run: status::stopped_by_event, `event` says which, `t` when, and y is the
 /// state then (the observer sees it too). The result also counts the firings, per event and in all.
 ///
-/// An event that changes the state restarts the rest of the step from the event, and resets the stepper
-/// (its history, or a kept acceleration, belongs to the old state). An event that does not change the state
-/// leaves the trajectory exactly as it would be without it.
+/// After a callable action (which may change the state, or only a parameter the right-hand side reads) the
+/// rest of the step is recomputed from the event, and the stepper is reset (its history, or a kept
+/// acceleration, belongs to the old state). A `record` event leaves the trajectory exactly as it would be
+/// without it. A terminal event at the start of a step (a root within the tolerance after a grid time) is
+/// not observed a second time, unless an action changed the state there.
 template <class Stepper, class System, class State, class Set, class Observer,
           std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
 [[nodiscard]] auto integrate(Stepper&& stepper, System&& f, State& y, detail::time_t_of<State> t0,
@@ -852,10 +969,22 @@ template <class Stepper, class Accel, class State, class Set, std::enable_if_t<d
     return integrate(stepper, a, x, v, t0, t1, dt, events, none);
 }
 
-/// The event loop for a control loop: one `tick` advances exactly one dt, from t0 + n dt to t0 + (n+1) dt
-/// on an integer counter, and reports the events that fired inside the tick and when. After a tick that
-/// stopped early (a terminal event, event_limit), the state is at that time, and the next tick goes from
-/// there to the next grid time.
+/// The event loop for a control loop, one `tick` per period of a timer: the clock is t0 + n dt on an
+/// integer counter, and each tick reports the events that fired inside it and when.
+///
+/// The per-tick contract (docs/events.md):
+///   - Every call that does not return an error is one period: ticks() goes up by one. A tick ends on its
+///     grid time t0 + ticks() dt (status ok), or early, inside its period, where a terminal event (or an
+///     action returning event_result::stop) fired (stopped_by_event) or the firing limit was reached
+///     (event_limit); the state is then the integrator's own state at r.t.
+///   - The call after one that ended early first completes the rest of that period (a partial step to its
+///     grid time, events watched), then takes its own period: at most two steps per call, so one call per
+///     timer interrupt stays in step with the timer whatever fires. (If that call ends early in the rest of
+///     the earlier period, the state lags one more period; each later call gains one back.) reached() is the
+///     last grid time the state reached.
+///   - An error (non_finite, non_finite_event, a stepper's status, invalid_time once t0 + n dt overflows)
+///     does not count: the state is the last good one, at r.t, and the next call tries again from there.
+///   - At most max_rhs_evals_per_tick / max_g_evals_per_tick evaluations per call (two steps' worth).
 ///
 ///     odestep::event_stepper loop(odestep::rk4<state>{}, odestep::watch(ground));
 ///     if (loop.start(0.0, 1e-3, y) != odestep::status::ok) { ... }
@@ -879,19 +1008,23 @@ public:
     }
 
     /// Starts the clock at t0 with ticks of dt and reads every event function on the initial state. An event
-    /// whose function is zero there is not armed (it does not fire at t0).
+    /// whose function is zero there (or whose root lies within its tolerance after t0) does not fire at t0.
+    /// Limits whose work bounds do not fit std::size_t: status::invalid_setting, nothing touched.
     template <class... States>
     [[nodiscard]] status start(value_type t0, value_type dt, const States&... y) {
         static_assert(sizeof...(States) == arity, "odestep: start(t0, dt, y) (Newtonian: start(t0, dt, x, v))");
         const detail::grid_clock<value_type> clock{t0, dt};
         const status checked = clock.check();
         if (checked != status::ok) return checked;
+        const status limited = limits_ok();
+        if (limited != status::ok) return limited;
         const std::array<const state_type*, arity> ptrs{&y...};
         const status s = engine_.begin(set_, t0, ptrs);
         if (s != status::ok) return s;
         detail::reset_if_any(stepper_);
         clock_ = clock;
         n_ = 0;
+        lag_ = 0;
         t_now_ = clock_.time(0);  // t0 + 0 dt, as every grid time
         clock_state_ = clock_state::on_grid;
         return status::ok;
@@ -899,12 +1032,15 @@ public:
 
     /// Re-reads every event function at the current time, after the caller changed the state, and resets
     /// the stepper's history. Firing counts are kept, and with them max_firings and the dead time: an event
-    /// that has used up its firings stays quiet. On a failure (non_finite_event, invalid_tolerance) nothing
-    /// changes.
+    /// that has used up its firings stays quiet. An event whose root lies within its tolerance after the
+    /// current time does not fire (call rearm at a stopped_by_event state and go on). On a failure
+    /// (non_finite_event, invalid_tolerance, invalid_setting) nothing changes.
     template <class... States>
     [[nodiscard]] status rearm(const States&... y) {
         static_assert(sizeof...(States) == arity, "odestep: rearm(y) (Newtonian: rearm(x, v))");
         if (clock_state_ == clock_state::idle) return status::invalid_time;
+        const status limited = limits_ok();
+        if (limited != status::ok) return limited;
         const std::array<const state_type*, arity> ptrs{&y...};
         const status s = engine_.reread(set_, time(), ptrs);
         if (s != status::ok) return s;
@@ -912,99 +1048,184 @@ public:
         return status::ok;
     }
 
-    /// One tick: to the next grid time t0 + (n+1) dt. Before `start`: status::invalid_time, nothing touched.
-    // (Always inlined: the caller's frame then holds the quiet tick's few values, and the rare path's frame,
-    // advance_rest, is the only other one on the stack.)
+    /// One tick: one period of the timer, to the grid time t0 + (ticks() + 1) dt (see the class comment).
+    /// Before `start`: status::invalid_time, nothing touched.
+    // (Always inlined: the caller's frame then holds the quiet tick's few values, and the rare paths' frames,
+    // rest and catch_up, are the only other ones on the stack.)
     template <class System, class... States>
     [[nodiscard]] ODESTEP_INLINE tick_result<value_type, Capacity> tick(System&& f, States&... y) {
         static_assert(sizeof...(States) == arity, "odestep: tick(f, y) (Newtonian: tick(a, x, v))");
-        using T = value_type;
+        const std::array<state_type*, arity> ptrs{&y...};
+        if (ODESTEP_UNLIKELY(clock_state_ != clock_state::on_grid)) return catch_up(f, ptrs);
         tick_result<T, Capacity> r;  // firings past `fired` stay unwritten: clearing them cost most of a quiet tick
         r.status = status::ok;
         r.t = t_now_;
         r.fired = 0;
         r.event = no_event;
-        // The time of the state (t_now_) is the last tick's end, or where a tick stopped; the tick's end is
-        // converted from the counter after the step (on the grid nothing is kept across the step's call).
-        T h = clock_.dt;
-        if (ODESTEP_UNLIKELY(clock_state_ != clock_state::on_grid)) {
-            if (clock_state_ == clock_state::idle) {
-                r.status = status::invalid_time;
-                return r;
-            }
-            const T t_end = grid_time();
-            h = t_end - t_now_;  // off the grid: back to it
-            if (h == T(0)) {     // an earlier tick stopped on this grid time
-                ++n_;
-                clock_state_ = clock_state::on_grid;
-                t_now_ = t_end;
-                r.t = t_end;
-                return r;
-            }
-        }
-        const std::array<state_type*, arity> ptrs{&y...};
+        // The time of the state (t_now_) is the last tick's end; the tick's end is converted from the counter
+        // after the step (on the grid nothing is kept across the step's call).
         typename engine_type::pack start;
-        r.status = engine_type::step(stepper_, f, ptrs, t_now_, h, start);
+        r.status = engine_type::step(stepper_, f, ptrs, t_now_, clock_.dt, start);
         if (ODESTEP_UNLIKELY(r.status != status::ok)) return r;  // y untouched, at t_now_
         const T t_end = grid_time();
         typename engine_type::values g;
-        if (ODESTEP_UNLIKELY(!engine_.settle(set_, ptrs, t_end, g))) {
-            // The firings go to the loop's own list, and are copied into r when there are some: with r's
-            // address in the call, every quiet tick would keep r in memory.
-            auto sink = [this](std::size_t k, std::size_t i, T t) {
-                if (k < Capacity) firings_[k] = event_firing<T>{i, t};
-            };
-            const T t_start = t_now_;
-            h = clock_state_ == clock_state::on_grid ? clock_.dt : t_end - t_start;  // as above
-            const detail::step_outcome<T> a =
-                engine_.advance_rest(stepper_, f, set_, ptrs, start, g, t_start, h, t_end, sink);
-            r.status = a.code;
-            r.t = a.t;
-            r.fired = a.fired;
-            r.event = a.event;
-            for (std::size_t k = 0; k < a.fired && k < Capacity; ++k) r.firings[k] = firings_[k];
-            t_now_ = a.t;
-            if (a.code == status::ok) {
-                ++n_;
-                clock_state_ = clock_state::on_grid;
-            } else if (!(a.t == t_start)) {
-                clock_state_ = clock_state::off_grid;
-            }
-            return r;
-        }
+        if (ODESTEP_UNLIKELY(!detail::is_finite(t_end) || !engine_.settle(set_, ptrs, t_end, g)))
+            return rest(f, ptrs, start, g, t_end);
         ++n_;
-        clock_state_ = clock_state::on_grid;
         t_now_ = t_end;
         r.t = t_end;
         return r;
     }
 
-    /// The time of the state: t0 + n dt, or the time a tick stopped at.
+    /// The time of the state: t0 + reached() dt, or the time a tick stopped at.
     constexpr value_type time() const noexcept { return t_now_; }
-    /// Completed ticks.
-    constexpr std::uint64_t ticks() const noexcept { return n_; }
+    /// Periods counted: the calls of tick since start that did not return an error.
+    constexpr std::uint64_t ticks() const noexcept { return n_ + lag_; }
+    /// The last grid time the state reached is t0 + reached() dt: ticks(), or one less after a tick that
+    /// ended early (more only while catching up after early ends in a row).
+    constexpr std::uint64_t reached() const noexcept { return n_; }
     /// Firings of event i since start.
     constexpr std::size_t firings(std::size_t i) const noexcept { return engine_.memory[i].fired; }
+    /// The stepper, as the loop keeps it.
     Stepper& stepper() noexcept { return stepper_; }
+    /// The events and their limits (changed limits are checked by the next rearm).
     Set& events() noexcept { return set_; }
 
 private:
-    // The end of the tick being taken, t0 + (n+1) dt, from the counter.
+    using T = value_type;
+    using engine_type = detail::event_engine<state_type, arity, Set>;
+    using ptrs_type = std::array<state_type*, arity>;
+
+    // The end of the step being taken, t0 + (n+1) dt, from the counter.
     value_type grid_time() const noexcept { return clock_.time(n_ + 1); }
 
-    // idle: before start; on_grid: the state is at t0 + n dt; off_grid: a tick stopped between grid times.
-    enum class clock_state : unsigned char { idle, on_grid, off_grid };
+    status limits_ok() const noexcept {
+        return detail::limits_status<Stepper, typename Set::finder, value_type>(Set::size, set_.limits);
+    }
+
+    static constexpr bool is_error(status s) noexcept {
+        return !(s == status::ok || s == status::stopped_by_event || s == status::event_limit);
+    }
+
+    // The quiet tick's step needs more than settle: a crossing (or probes, or a NaN from g), or a grid time
+    // that overflowed (then the step is undone: status::invalid_time, nothing else changes).
+    template <class System>
+    ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> rest(System& f, const ptrs_type& ptrs,
+                                                          typename engine_type::pack& start,
+                                                          const typename engine_type::values& g, T t_end) {
+        tick_result<T, Capacity> r;
+        r.status = status::ok;
+        r.t = t_now_;
+        r.fired = 0;
+        r.event = no_event;
+        if (!detail::is_finite(t_end)) {
+            for (std::size_t k = 0; k < arity; ++k) *ptrs[k] = start[k];
+            detail::reset_if_any(stepper_);
+            r.status = status::invalid_time;
+            return r;
+        }
+        const std::uint64_t target = n_ + 1;
+        finish_piece(f, ptrs, start, g, t_now_, clock_.dt, t_end, r);
+        account(r, target);
+        return r;
+    }
+
+    // A tick off the quiet path: before start, or after a tick that ended early (or failed inside its
+    // period). Up to two pieces, each to the next grid time: the rest of an earlier period, then this one's.
+    template <class System>
+    ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> catch_up(System& f, const ptrs_type& ptrs) {
+        tick_result<T, Capacity> r;
+        r.status = status::ok;
+        r.t = t_now_;
+        r.fired = 0;
+        r.event = no_event;
+        if (clock_state_ == clock_state::idle) {
+            r.status = status::invalid_time;
+            return r;
+        }
+        const std::uint64_t target = n_ + lag_ + 1;  // this call's period ends at t0 + target dt
+        for (int piece = 0; piece < 2 && r.status == status::ok && n_ < target; ++piece) {
+            const T t_end = grid_time();
+            if (!detail::is_finite(t_end)) {
+                r.status = status::invalid_time;
+                break;
+            }
+            // On the grid a step is dt (as in the quiet tick: a multistep history expects it); off it, back to
+            // the grid time.
+            const T h = off_grid_ ? t_end - t_now_ : clock_.dt;
+            if (h == T(0)) {  // an earlier tick stopped on this grid time
+                ++n_;
+                off_grid_ = false;
+                continue;
+            }
+            const bool partial = off_grid_;
+            typename engine_type::pack start;
+            const status s = engine_type::step(stepper_, f, ptrs, t_now_, h, start);
+            if (s != status::ok) {
+                r.status = s;
+                break;
+            }
+            typename engine_type::values g;
+            if (engine_.settle(set_, ptrs, t_end, g)) {
+                ++n_;
+                t_now_ = t_end;
+                off_grid_ = false;
+            } else {
+                finish_piece(f, ptrs, start, g, t_now_, h, t_end, r);
+            }
+            // A partial step (from where a tick stopped back to the grid) does not fit a multistep history.
+            if (partial) detail::reset_if_any(stepper_);
+        }
+        r.t = t_now_;
+        account(r, target);
+        return r;
+    }
+
+    // The rest of one piece after settle returned false: the engine's advance_rest, its firings appended to
+    // r's list, and the clock moved to where the piece ended.
+    template <class System>
+    void finish_piece(System& f, const ptrs_type& ptrs, typename engine_type::pack& start,
+                      const typename engine_type::values& g, T t_start, T h, T t_end, tick_result<T, Capacity>& r) {
+        const std::size_t offset = r.fired;
+        auto sink = [&r, offset](std::size_t k, std::size_t i, T t) {
+            if (offset + k < Capacity) r.firings[offset + k] = event_firing<T>{i, t};
+        };
+        const detail::step_outcome<T> a =
+            engine_.advance_rest(stepper_, f, set_, ptrs, start, g, t_start, h, t_end, sink);
+        r.status = a.code;
+        r.fired += a.fired;
+        r.event = a.event;
+        r.t = a.t;
+        t_now_ = a.t;
+        if (a.code == status::ok) {
+            ++n_;
+            off_grid_ = false;
+        } else if (!(a.t == t_start)) {
+            off_grid_ = true;
+        }
+    }
+
+    // After a tick that left the quiet path: the call counts one period unless it returned an error.
+    void account(const tick_result<T, Capacity>& r, std::uint64_t target) noexcept {
+        const std::uint64_t counted = is_error(r.status) ? target - 1 : target;
+        lag_ = counted > n_ ? counted - n_ : 0;
+        clock_state_ = lag_ == 0 && !off_grid_ ? clock_state::on_grid : clock_state::behind;
+    }
+
+    // idle: before start; on_grid: the state is at t0 + n dt and no period is owed; behind: the state is off
+    // the grid (a tick stopped inside its period) or periods are owed (lag_).
+    enum class clock_state : unsigned char { idle, on_grid, behind };
 
     Stepper stepper_;
     Set set_;
-    using engine_type = detail::event_engine<state_type, arity, Set>;
     engine_type engine_{};
     detail::grid_clock<value_type> clock_{};
-    value_type t_now_ = value_type(0);  // the time of the state: t0 + n dt computed at the last tick's end
-    std::uint64_t n_ = 0;               // 64 bits on every target: a 32-bit count wraps after 49.7 days of 1 kHz ticks
+    value_type t_now_ = value_type(0);  // the time of the state: t0 + n dt, or where a tick stopped
+    std::uint64_t n_ = 0;    // the last grid time reached; 64 bits on every target (a 32-bit count of 1 kHz ticks
+                             // wraps after 49.7 days)
+    std::uint64_t lag_ = 0;  // periods counted beyond n_ (after ticks that ended early)
     clock_state clock_state_ = clock_state::idle;
-    // The firings of a tick that had some (its first Capacity), copied into its tick_result.
-    std::array<event_firing<value_type>, Capacity> firings_{};
+    bool off_grid_ = false;  // the state is between t0 + n dt and t0 + (n+1) dt
 };
 
 /// make_event_stepper(stepper, watch(...)) with the default capacity; make_event_stepper<16>(...) lists up
