@@ -253,15 +253,20 @@ TEST_CASE("defect 7: an action that changes only a parameter takes effect for th
 
 TEST_CASE("defect 8: non_finite_event hands back a state where every event function is finite") {
     // Event 0 (3 y - 1.8 rising: 3 * 0.6 rounds below 1.8, so g is -2.2e-16 at y = 0.6 and positive at the
-    // next double) moves the state back by 0.3; event 1's g is NaN on (0.59, 0.6], where event 0 is located
-    // (the bracket's left end, 0.6), and finite at the ends of every step and at the bracket's right end.
+    // next double: no exact zero) moves the state back by 0.3. Event 1's g is NaN for y in (0.59, 0.6], where
+    // event 0 is located (the bracket's left end), and for y in (0.29, 0.3], where its action puts the
+    // state; finite at the ends of every step and at the bracket's right end. The action's NaN sends the loop
+    // back to a state where every g is finite: not the bracket's left end, where only event 0's was read.
     REQUIRE(3 * 0.6 - 1.8 < 0.0);
     REQUIRE(3 * std::nextafter(0.6, 1.0) - 1.8 > 0.0);
     const auto e0 = odestep::make_event<state1>([](double, const state1& y) { return 3 * y[0] - 1.8; },
                                                 odestep::direction::rising, [](double, state1& y) { y[0] -= 0.3; });
-    const auto e1 =
-        odestep::make_event<state1>([](double t, const state1&) { return t > 0.59 && t <= 0.6 ? not_a_number : 1.0; },
-                                    odestep::direction::either, odestep::record);
+    const auto e1 = odestep::make_event<state1>(
+        [](double, const state1& y) {
+            const bool bad = (y[0] > 0.59 && y[0] <= 0.6) || (y[0] > 0.29 && y[0] <= 0.3);
+            return bad ? not_a_number : 1.0;
+        },
+        odestep::direction::either, odestep::record);
     state1 y{0.0};
     const auto r = odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 1.0, 0.25, odestep::watch(e0, e1));
     CHECK(r.status == odestep::status::non_finite_event);
@@ -337,4 +342,58 @@ TEST_CASE("issue 20 defect 5: a tick whose grid time overflows is refused, not o
         CHECK(y[0] == 0.0);
     }
     CHECK(refused == 5);  // t0 + n dt = (n + 1) big overflows from n = 4 on: 3 ticks, then 5 refusals
+}
+
+TEST_CASE("sharper: g exactly zero at a representable time fires at that time") {
+    // g = t - 0.1 along the grid 0, 0.25, ...: the root 0.1 (the double nearest 0.1) is representable, and g
+    // is exactly zero there; the event is reported at 0.1, not at the last time before it.
+    double when = -1.0;
+    const auto ev = odestep::make_event<state1>([](double t, const state1&) { return t - 0.1; },
+                                                odestep::direction::rising, [&](double t, state1&) { when = t; });
+    state1 y{0.0};
+    const auto r = odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 1.0, 0.25, odestep::watch(ev));
+    CHECK(r.status == odestep::status::ok);
+    CHECK(r.fired == 1);
+    CHECK(when == 0.1);
+    // and along the state: y = 0.3 is reached at the time where y(t) == 0.3 exactly
+    double at = -1.0;
+    double y_at = -1.0;
+    const auto level =
+        odestep::make_event<state1>([](double, const state1& s) { return s[0] - 0.3; }, odestep::direction::rising,
+                                    [&](double t, state1& s) {
+                                        at = t;
+                                        y_at = s[0];
+                                    });
+    y = {0.0};
+    CHECK(odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 1.0, 0.25, odestep::watch(level)).status ==
+          odestep::status::ok);
+    CHECK(y_at <= 0.3);
+    CHECK(y_at >= 0.3 - 4 * eps);
+    CHECK(std::abs(at - 0.3) <= 4 * eps);
+}
+
+TEST_CASE("sharper: the action of an either event is told which way the crossing went (Julia's affect_neg!)") {
+    // One g with two behaviours: g = sin(2 pi t) along the clock, either direction; it falls through zero at
+    // 0.5 and 1.5 and rises at 1 and 2 (zero at t0: not armed there).
+    const double pi = std::acos(-1.0);
+    std::array<odestep::direction, 8> seen{};
+    std::array<double, 8> when{};
+    std::size_t n = 0;
+    const auto ev = odestep::make_event<state1>([pi](double t, const state1&) { return std::sin(2 * pi * t); },
+                                                odestep::direction::either,
+                                                [&](double t, state1&, odestep::direction crossed) {
+                                                    if (n < seen.size()) {
+                                                        seen[n] = crossed;
+                                                        when[n] = t;
+                                                    }
+                                                    ++n;
+                                                });
+    state1 y{0.0};
+    const auto r = odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 2.2, 0.1, odestep::watch(ev));
+    CHECK(r.status == odestep::status::ok);
+    REQUIRE(n == 4);
+    for (std::size_t k = 0; k < 4; ++k) {
+        CHECK(std::abs(when[k] - 0.5 * static_cast<double>(k + 1)) <= 1e-12);
+        CHECK(seen[k] == (k % 2 == 0 ? odestep::direction::falling : odestep::direction::rising));
+    }
 }

@@ -38,7 +38,9 @@ inline constexpr record_action record{};
 /// One event: g(t, y) -> T for a first-order state, or g(t, x, v) -> T for Newton's equations, the
 /// direction that counts, and the action: `terminal`, `record`, or a callable
 /// `action(T t, State& y)` / `action(T t, State& x, State& v)` that may change the state (a bounce, a
-/// serving of cream) and returns `event_result` (or nothing, meaning proceed).
+/// serving of cream) and returns `event_result` (or nothing, meaning proceed). A callable that takes one
+/// more argument, `action(T t, State& y, direction crossed)`, is told which way the crossing went (rising
+/// or falling), so that one `either` event can act both ways.
 ///
 /// Settings, all optional (the defaults are what most problems need):
 ///   - tolerance: the width of the time bracket the event is located to. Zero (the default), or anything
@@ -299,19 +301,34 @@ constexpr status call_step(S& stepper, System& f, const std::array<State*, sizeo
     return stepper.step(f, *y[I]..., t, h);
 }
 
+// Runs an action: `terminal` stops, `record` proceeds, a callable is called as action(t, y...) or, if it takes
+// one more argument, action(t, y..., crossed), crossed being the direction the crossing went (rising or
+// falling: for `either` events, one g with two behaviours, as Julia's affect! and affect_neg!).
 template <class State, class Action, class T, std::size_t... I>
-constexpr event_result call_action(Action& action, T t, const std::array<State*, sizeof...(I)>& y,
+constexpr event_result call_action(Action& action, T t, direction crossed, const std::array<State*, sizeof...(I)>& y,
                                    std::index_sequence<I...>) {
     if constexpr (std::is_same_v<Action, stop_action>) {
-        (void)action, (void)t, (void)y;
+        (void)action, (void)t, (void)y, (void)crossed;
         return event_result::stop;
     } else if constexpr (std::is_same_v<Action, record_action>) {
-        (void)action, (void)t, (void)y;
+        (void)action, (void)t, (void)y, (void)crossed;
         return event_result::proceed;
+    } else if constexpr (std::is_invocable_v<Action&, T, decltype(*y[I])..., direction>) {
+        using R = std::invoke_result_t<Action&, T, decltype(*y[I])..., direction>;
+        if constexpr (std::is_void_v<R>) {
+            action(t, *y[I]..., crossed);
+            return event_result::proceed;
+        } else {
+            static_assert(std::is_same_v<R, event_result>,
+                          "odestep: an event action returns odestep::event_result or nothing");
+            return action(t, *y[I]..., crossed);
+        }
     } else {
         static_assert(std::is_invocable_v<Action&, T, decltype(*y[I])...>,
                       "odestep: an event action must be `terminal`, `record`, or callable as "
-                      "action(T t, State& y) (Newtonian: action(T t, State& x, State& v))");
+                      "action(T t, State& y) or action(T t, State& y, direction crossed) (Newtonian: "
+                      "action(T t, State& x, State& v[, direction crossed]))");
+        (void)crossed;
         using R = std::invoke_result_t<Action&, T, decltype(*y[I])...>;
         if constexpr (std::is_void_v<R>) {
             action(t, *y[I]...);
@@ -822,6 +839,10 @@ private:
             if (r.failed) return failure != status::ok ? failure : status::non_finite_event;
             a = sign_h * r.a;
             b = sign_h * r.b;
+            if (r.fb == T(0)) {  // g exactly zero at b: the event is at that time, with the state there
+                a = b;
+                a_state = b_state;
+            }
             if (!evaluate_all(set, time_at(t_s, b, h, t_end), pointers(b_state), g_b)) return status::non_finite_event;
         }
         return status::ok;
@@ -855,7 +876,9 @@ private:
             m.until = t_b;
             sink(fired_here, i, t_star);
             fired_here += 1;
-            if (call_action<State>(e.action, t_star, y_star, seq{}) == event_result::stop) {
+            // The direction the crossing went: from below zero, rising; from above, falling.
+            const direction crossed = m.g < T(0) ? direction::rising : direction::falling;
+            if (call_action<State>(e.action, t_star, crossed, y_star, seq{}) == event_result::stop) {
                 stop_index = i;
             } else if constexpr (!keeps_state_v<Ev>) {
                 acted = true;
