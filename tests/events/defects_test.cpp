@@ -397,3 +397,29 @@ TEST_CASE("sharper: the action of an either event is told which way the crossing
         CHECK(seen[k] == (k % 2 == 0 ? odestep::direction::falling : odestep::direction::rising));
     }
 }
+
+TEST_CASE("sharper: every root is located to a bracket of adjacent representable times") {
+    // dt 0.25: g = (t - c)^3, a triple root (the root finder narrows it slowly, so that its tolerance, not
+    // luck, decides the bracket), at times c that no grid time hits; the event's time (the last time before
+    // the crossing, or c itself where g is exactly zero there) and the next representable time after it
+    // bracket c. (With the earlier tolerance, 4 eps (|t| + |dt|), 0.3 was located 1 ULP before and
+    // 7.389056098930650 3 ULPs before.)
+    for (const double c : {0.3, 0.7071067811865476, 1.1, 3.14159265358979, 7.389056098930650}) {
+        double when = -1.0;
+        const auto ev = odestep::make_event<state1>(
+            [c](double t, const state1&) {
+                const double d = t - c;
+                return d * d * d;
+            },
+            odestep::direction::rising, [&](double t, state1&) { when = t; });
+        state1 y{0.0};
+        const auto r = odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 8.0, 0.25, odestep::watch(ev));
+        CHECK(r.status == odestep::status::ok);
+        CHECK(r.fired == 1);
+        CAPTURE(c);
+        CAPTURE(when);
+        // t - c changes sign between when and the next double (or is zero at when)
+        CHECK(when <= c);
+        CHECK(std::nextafter(when, 10.0) >= c);
+    }
+}

@@ -5,6 +5,7 @@
 #define ODESTEP_EVENTS_EVENTS_HPP
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -43,12 +44,13 @@ inline constexpr record_action record{};
 /// or falling), so that one `either` event can act both ways.
 ///
 /// Settings, all optional (the defaults are what most problems need):
-///   - tolerance: the width of the time bracket the event is located to. Zero (the default), or anything
-///     smaller than a few ULPs, means a few ULPs: 4 eps (|t| + |dt|) in T, relative, so that it suits
-///     float and double, tiny and huge t alike. A crossing located within the tolerance after the event's
-///     last firing is that firing's own (an action that moved the state but not g: it fires once), and one
-///     within the tolerance after the start (or a rearm) counts as a zero there: it does not fire (so a run
-///     begun at a stopped_by_event state goes on).
+///   - tolerance: the width of the time bracket the event is located to. Zero (the default) means adjacent
+///     times: half the spacing of T at the step's time, so that the bracket's ends are adjacent (or equal)
+///     representable times, in float and double, tiny and huge t alike (within the root finder's cap of
+///     re-steps, event_limits::max_iterations). A crossing located within the tolerance, or at least
+///     4 eps (|t| + |dt|), after the event's last firing is that firing's own (an action that moved the
+///     state but not g: it fires once), and one as close after the start (or a rearm) counts as a zero
+///     there: it does not fire (so a run begun at a stopped_by_event state goes on).
 ///   - band: after firing, the event re-arms only once |g| > band has been seen at a step's end (a probe,
 ///     or the event's own location point): the dead band of a crossing. Zero by default (re-arms as soon as
 ///     g leaves zero).
@@ -102,8 +104,9 @@ constexpr event<State, G, Action> make_event(G g, direction d, Action action = A
 /// limit) are refused with status::invalid_setting before anything is touched.
 struct event_limits {
     /// Cap on the root finder's re-steps for one event location; zero means the finder's own worst case from
-    /// dt down to the default tolerance (Brent: 102 in double, 44 in float; bisection: 50 and 21),
-    /// so that it always converges. Smooth event functions need 4 to 10.
+    /// dt down to 4 eps dt (Brent: 102 in double, 44 in float; bisection: 50 and 21). Smooth event
+    /// functions need 4 to 10 to reach adjacent times; a location that would need more (a root of high
+    /// order, or t much smaller than dt) stops at the cap with a wider bracket.
     std::size_t max_iterations = 0;
     /// Firings allowed inside one step; one more is reported as status::event_limit. It also caps the
     /// locations in one step, whether they fire or not (an event function that is not a pure function of
@@ -491,7 +494,8 @@ private:
                 return outcome(status::ok, t_end, no_event);
             }
             const bool forward = h > T(0);
-            const T default_tolerance = T(4) * std::numeric_limits<T>::epsilon() * (abs_value(t_s) + abs_value(h));
+            // Crossings this close after an event's last firing (or the start) are the same crossing.
+            const T same_root = T(4) * std::numeric_limits<T>::epsilon() * (abs_value(t_s) + abs_value(h));
             // Scan (0, h] piece by piece (the pieces end at the probes and at h). lo is where the events'
             // memory was last updated; lo_state the state there.
             T lo = T(0);
@@ -554,8 +558,8 @@ private:
                         std::size_t stop_index = no_event;
                         bool limited = false;
                         bool acted_now = false;
-                        fire_all(set, t_star, t_b, forward, default_tolerance, pointers(a_state), after, sink,
-                                 fired_here, stop_index, limited, acted_now);
+                        fire_all(set, t_star, t_b, forward, same_root, pointers(a_state), after, sink, fired_here,
+                                 stop_index, limited, acted_now);
                         acted = acted || acted_now;
                         if constexpr (!actions_keep_state) {
                             if (!all_finite_pack(a_state)) return fail(lo_state, t_star, status::non_finite);
@@ -794,7 +798,12 @@ private:
     template <class Stepper, class System>
     ODESTEP_INLINE status locate(Stepper& trial, System& f, set_type& set, const pack& start, T t_s, T h, T t_end, T lo,
                                  const pack& lo_state, T& a, T& b, pack& a_state, pack& b_state, values& g_b) {
-        const T default_tolerance = T(4) * std::numeric_limits<T>::epsilon() * (abs_value(t_s) + abs_value(h));
+        // Half the spacing of T at the step's times: a bracket that narrow, in s, has ends whose times are
+        // adjacent or equal (each end rounds by at most half a spacing). (The spacing below the larger time,
+        // which is the smaller one at a power of two, and never below the least subnormal.)
+        const T larger = max_value(abs_value(t_s), abs_value(t_end));
+        const T default_tolerance =
+            max_value((larger - std::nextafter(larger, T(0))) / T(2), std::numeric_limits<T>::denorm_min());
         const std::size_t cap = event_iterations<T, Finder>(set.limits);
         // The trial states live in h-scaled units of time: s in (0, h] (or [h, 0) integrating backwards).
         // The finders want a < b, so they work on u = s / sign(h).
@@ -854,16 +863,15 @@ private:
     // state but not g) or a zero at the start (a run begun at a stopped_by_event state): it does not fire.
     // acted: a callable action ran (and did not stop).
     template <class Sink>
-    void fire_all(set_type& set, T t_star, T t_b, bool forward, T default_tolerance, const refs& y_star,
-                  const values& g_b, Sink& sink, std::size_t& fired_here, std::size_t& stop_index, bool& limited,
-                  bool& acted) {
+    void fire_all(set_type& set, T t_star, T t_b, bool forward, T same_root, const refs& y_star, const values& g_b,
+                  Sink& sink, std::size_t& fired_here, std::size_t& stop_index, bool& limited, bool& acted) {
         for_each(set, [&](auto index, auto& e) {
             using Ev = std::remove_reference_t<decltype(e)>;
             constexpr std::size_t i = decltype(index)::value;
             if (stop_index != no_event || limited) return;
             event_memory<T>& m = memory[i];
             if (!(m.armed && crosses(e.direction, m.g, g_b[i]))) return;
-            const T tolerance = max_value(e.tolerance, default_tolerance);
+            const T tolerance = max_value(e.tolerance, same_root);
             if (forward ? !(t_star > m.until + tolerance) : !(t_star < m.until - tolerance)) return;
             if (fired_here >= set.limits.max_firings_per_step) {
                 limited = true;
