@@ -9,8 +9,7 @@
 #   scripts/fuzz.sh SECONDS     all targets for SECONDS in all (split evenly, one after the other), going on past
 #                               a finding; prints the executions per target and where the findings are
 #   scripts/fuzz.sh --known     replays tests/fuzz/known/<target>/: findings not fixed yet (each is expected to
-#                               fail until its fix lands; then it moves to the corpus), with impure event
-#                               functions allowed (ODESTEP_FUZZ_IMPURE_EVENTS=1, see tests/fuzz/fuzz_events.cpp)
+#                               fail until its fix lands; then it moves to the corpus as a regression-* input)
 #   scripts/fuzz.sh --build     builds only
 # Every mode ends with the line "fuzz: N passed, M failed". A finding is written to build/fuzz/findings/<target>/
 # (replay it: build/fuzz/<target> FILE; ODESTEP_FUZZ_TRACE=1 prints what the checks saw). New inputs that
@@ -109,7 +108,7 @@ if [ "$mode" = --known ]; then
   for t in "${targets[@]}"; do
     for f in "$root"/tests/fuzz/known/"$t"/*; do
       [ -f "$f" ] || continue
-      if ODESTEP_FUZZ_IMPURE_EVENTS=1 "$dir/$t" -timeout="$timeout_s" "$f" > "$dir/known.log" 2>&1; then
+      if "$dir/$t" -timeout="$timeout_s" "$f" > "$dir/known.log" 2>&1; then
         echo "fuzz: known finding $t/$(basename "$f") passes now: move it to tests/fuzz/corpus/$t/"
         passed=$((passed + 1))
       else

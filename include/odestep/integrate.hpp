@@ -62,6 +62,7 @@ struct step_outcome {
     T t;
     std::size_t fired;
     std::size_t event;
+    bool acted = false;  ///< an event's action ran inside the step (the state at t may differ from the one observed)
 };
 
 /// What the loop ends in: as integrate_result, and the event that stopped it (or no_event).
@@ -84,7 +85,10 @@ run_outcome<T> run_grid(const grid_plan<T>& plan, Advance&& advance, Observer& o
         const T next = plan.end_of(i);
         const step_outcome<T> a = advance(t, plan.step_size(i), next);
         if (a.code != status::ok) {
-            if (a.code == status::stopped_by_event) observe(a.t, static_cast<const States&>(ys)...);
+            // The state where a terminal event stopped the run, unless that is the step's start, already
+            // observed, with no action run since (a root within the tolerance after a grid time).
+            if (a.code == status::stopped_by_event && (!(a.t == t) || a.acted))
+                observe(a.t, static_cast<const States&>(ys)...);
             return {a.code, a.t, i, a.event};
         }
         observe(next, static_cast<const States&>(ys)...);

@@ -3,16 +3,14 @@
 // Newtonian (velocity Verlet, Euler-Richardson). One to three events whose functions, directions, actions
 // (proceed, a bounce, a stop, a jump; record; terminal), settings and limits are drawn from the input, as
 // are the right-hand side and the times. Checks: one status of the enum; a rejected argument or setting
-// leaves nothing evaluated, observed or touched; per grid step or tick at most max_rhs_evals_per_step
-// right-hand-side and max_g_evals_per_step event-function evaluations; no ok step from a right-hand side
-// that returned NaN or Inf; observer times on the grid (or t1, or the time of the terminal event that ends
-// the run), monotone; a run or tick that failed at the time of its last good state leaves that state bit
-// for bit, and one that stopped inside a step stops there with a finite state; an ok tick ends on
-// t0 + n dt.
-//
-// Known defect 5 of issue 20 (the per-tick clock overflowing to Inf once t0 + n dt is not finite, in
-// include/odestep/events/) is fixed with the event loop's rework; until then the tick sequence stops before
-// the clock's next time overflows. Define ODESTEP_FUZZ_TICK_OVERFLOW to drive ticks past it.
+// leaves nothing evaluated, observed or touched; per grid step at most max_rhs_evals_per_step
+// right-hand-side and max_g_evals_per_step event-function evaluations, per tick max_rhs_evals_per_tick and
+// max_g_evals_per_tick; no ok step from a right-hand side that returned NaN or Inf; observer times on the
+// grid (or t1, or the time of the terminal event that ends the run), monotone; a run or tick that failed at
+// the time of its last good state leaves that state bit for bit, and one that stopped inside a step stops
+// there with a finite state; every tick that is not an error counts one period (ticks() + 1), an error
+// none; an ok tick ends on the grid time it reached, t0 + reached() dt, which is finite (defect 5 of issue
+// 20: once t0 + n dt overflows, a tick is invalid_time); a stopped one inside its own period.
 #include <odestep/odestep.hpp>
 
 #include <array>
@@ -40,11 +38,11 @@ struct g_counter {
     unsigned actions = 0;
 };
 
-// ODESTEP_FUZZ_IMPURE_EVENTS=1 in the environment: an event function may return one drawn value at one
-// drawn evaluation, so that it is not a function of (t, y) alone (a sensor, a counter). Off by default: with
-// it the target finds the open hang in tests/fuzz/known/fuzz_events/ within seconds (docs/hardening.md).
+// An event function may return one drawn value at one drawn evaluation, so that it is not a function of
+// (t, y) alone (a sensor, a counter): every call must still return within its bound (issue 19, defect 1).
+// ODESTEP_FUZZ_PURE_EVENTS=1 in the environment turns that off.
 bool impure() {
-    static const bool on = std::getenv("ODESTEP_FUZZ_IMPURE_EVENTS") != nullptr;
+    static const bool on = std::getenv("ODESTEP_FUZZ_PURE_EVENTS") == nullptr;
     return on;
 }
 
@@ -207,7 +205,7 @@ void run_integrate(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_co
     for (std::size_t i = 0; i < E; ++i) fired += r.firings[i];
     ODESTEP_FUZZ_CHECK(fired == r.fired, "the firings per event do not add up to the firings");
     if (r.status != odestep::status::ok && check.observed > 0 && r.t == check.last_t && r.fired == 0 &&
-        g.actions == observe.actions_then && set.limits.probes == 0)  // as in run_ticks: the state observed last
+        g.actions == observe.actions_then && set.limits.probes == 0 && g.since <= E)  // as in run_ticks
         for (std::size_t k = 0; k < K; ++k)
             ODESTEP_FUZZ_CHECK(same_bits(y[k], check.last[k]), "a failed run whose state is not the last one observed");
     check.finish(r, y, false, 0);
@@ -216,8 +214,8 @@ void run_integrate(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_co
 template <class Stepper, std::size_t K, class Set>
 void run_ticks(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_counter& g, std::array<v2, K>& y) {
     constexpr std::size_t E = Set::size;
-    const std::size_t bound = odestep::max_rhs_evals_per_step<Stepper>(E, set.limits);
-    const std::size_t g_bound = odestep::max_g_evals_per_step<T>(E, set.limits);
+    const std::size_t bound = odestep::max_rhs_evals_per_tick<Stepper>(E, set.limits);
+    const std::size_t g_bound = odestep::max_g_evals_per_tick<T>(E, set.limits);
     auto loop = odestep::make_event_stepper(stepper, set);
     system_of<K == 2> sys{&f};
     const auto tick = [&] { return std::apply([&](auto&... s) { return loop.tick(sys, s...); }, y); };
@@ -248,9 +246,6 @@ void run_ticks(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_counte
     }
     ODESTEP_FUZZ_CHECK(loop.time() == t0 && loop.ticks() == 0, "start: not at t0");
     for (int i = 0, ticks = 1 + static_cast<int>(in.index(32)); i < ticks; ++i) {
-#ifndef ODESTEP_FUZZ_TICK_OVERFLOW
-        if (!std::isfinite(t0 + static_cast<T>(loop.ticks() + 1) * dt)) break;  // known defect 5 (see above)
-#endif
         if (in.index(8) == 0) {  // the caller changes the state, and rearms
             y[0][in.index(2)] = in.number<T>();
             if (!finite(y[0])) y[0] = v2{};
@@ -271,21 +266,28 @@ void run_ticks(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_counte
                            static_cast<unsigned long long>(n_before), odestep::to_string(r.status), r.t, r.fired,
                            f.since, g.since);
         ODESTEP_FUZZ_CHECK(valid(r.status), "tick: a status outside the enum");
-        ODESTEP_FUZZ_CHECK(f.since <= bound, "a tick made more evaluations than max_rhs_evals_per_step");
-        ODESTEP_FUZZ_CHECK(g.since <= g_bound, "a tick evaluated the event functions more than max_g_evals_per_step");
+        ODESTEP_FUZZ_CHECK(f.since <= bound, "a tick made more evaluations than max_rhs_evals_per_tick");
+        ODESTEP_FUZZ_CHECK(g.since <= g_bound, "a tick evaluated the event functions more than max_g_evals_per_tick");
+        const bool error = !(r.status == odestep::status::ok || r.status == odestep::status::stopped_by_event ||
+                             r.status == odestep::status::event_limit);
+        ODESTEP_FUZZ_CHECK(loop.ticks() == n_before + (error ? 0U : 1U),
+                           "a tick that was not an error did not count one period (or an error counted one)");
         ODESTEP_FUZZ_CHECK(r.t == loop.time(), "tick: r.t is not the loop's time");
         ODESTEP_FUZZ_CHECK(r.status != odestep::status::stopped_by_event || r.event < E, "stopped by no event");
         const bool forward = dt > T(0);
         const auto along = [forward](T a, T b) { return forward ? a <= b : a >= b; };
         if (r.status == odestep::status::ok) {
             ODESTEP_FUZZ_CHECK(!f.non_finite_since, "a tick whose right-hand side returned NaN or Inf was ok");
-            ODESTEP_FUZZ_CHECK(loop.ticks() == n_before + 1 && r.t == grid_end, "an ok tick not on t0 + n dt");
+            ODESTEP_FUZZ_CHECK(r.t == t0 + static_cast<T>(loop.reached()) * dt && loop.reached() <= loop.ticks(),
+                               "an ok tick not on the grid time it reached, t0 + reached() dt");
             ODESTEP_FUZZ_CHECK(std::isfinite(r.t), "an ok tick whose time is not finite");
             for (const auto& s : y) ODESTEP_FUZZ_CHECK(finite(s), "an ok tick left a state that is not finite");
-        } else if (r.t == t_before && r.fired == 0 && g.actions == actions_before && set.limits.probes == 0) {
-            // Nothing fired, no action ran, no probe: the tick stopped at its start, with the state before it.
-            // (A firing or a probe can leave the state at t_s + s for an s that t_s + s does not resolve, where
-            // dt is far below the ULP of t: then only finiteness is asked.)
+        } else if (r.t == t_before && r.fired == 0 && g.actions == actions_before && set.limits.probes == 0 &&
+                   g.since <= E) {
+            // Nothing fired, no action ran, no probe, no location (g read only at the step's end): the tick
+            // stopped at its start, with the state before it. (A firing, a probe or a location that fired
+            // nothing, as after an impure g's glitch, can leave the state at t_s + s for an s that t_s + s does
+            // not resolve, where dt is far below the ULP of t: then only finiteness is asked.)
             ODESTEP_FUZZ_CHECK(unchanged(before), "a failed tick whose state is not the one before it");
         } else if (r.t == t_before) {
             bool all_finite = true;

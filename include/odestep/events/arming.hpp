@@ -1,0 +1,53 @@
+// odestep: arming, the crossing test and what the loop remembers of each event between evaluation points (its last
+// g, the time of its last firing and of its bracket's end, its firings, whether it is armed); the engine's
+// rearm applies the band, the dead time and max_firings to it.
+#ifndef ODESTEP_EVENTS_ARMING_HPP
+#define ODESTEP_EVENTS_ARMING_HPP
+
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+#include "event.hpp"
+
+namespace odestep {
+
+namespace detail {
+
+template <class S, class = void>
+struct has_reset : std::false_type {};
+template <class S>
+struct has_reset<S, std::void_t<decltype(std::declval<S&>().reset())>> : std::true_type {};
+
+template <class S>
+constexpr void reset_if_any(S& s) noexcept {
+    if constexpr (has_reset<S>::value) s.reset();
+}
+
+template <class T>
+constexpr bool crosses(direction d, T before, T after) noexcept {
+    switch (d) {
+        case direction::falling: return before > T(0) && after <= T(0);
+        case direction::rising: return before < T(0) && after >= T(0);
+        case direction::either: break;
+    }
+    return (before > T(0) && after <= T(0)) || (before < T(0) && after >= T(0));
+}
+
+// What the loop remembers of each event between evaluation points.
+template <class T>
+struct event_memory {
+    T g = T(0);     // g at the last evaluation point: crossings are measured from it
+    T last = T(0);  // time of the last firing
+    // The end of the last firing's bracket (or the time of start or rearm): a crossing located within the
+    // event's tolerance after it is that firing's own crossing (or a zero at the start) and does not fire.
+    T until = T(0);
+    std::size_t fired = 0;
+    bool armed = false;  // may fire: g has been seen away from zero (beyond the band, after the dead time)
+};
+
+}  // namespace detail
+
+}  // namespace odestep
+
+#endif

@@ -1,0 +1,290 @@
+// odestep: the per-tick event loop, event_stepper: one tick per period of a timer, on the grid clock, with the
+// per-tick contract (docs/events.md).
+#ifndef ODESTEP_EVENTS_STEPPER_HPP
+#define ODESTEP_EVENTS_STEPPER_HPP
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <tuple>
+
+#include "../detail/grid_clock.hpp"
+#include "../detail/ops.hpp"
+#include "../state.hpp"
+#include "../status.hpp"
+#include "arming.hpp"
+#include "bounds.hpp"
+#include "engine.hpp"
+#include "event.hpp"
+
+namespace odestep {
+
+/// The event loop for a control loop, one `tick` per period of a timer: the clock is t0 + n dt on an
+/// integer counter, and each tick reports the events that fired inside it and when.
+///
+/// The per-tick contract (docs/events.md):
+///   - Every call that does not return an error is one period: ticks() goes up by one. A tick ends on its
+///     grid time t0 + ticks() dt (status ok), or early, inside its period, where a terminal event (or an
+///     action returning event_result::stop) fired (stopped_by_event) or the firing limit was reached
+///     (event_limit); the state is then the integrator's own state at r.t.
+///   - The call after one that ended early first completes the rest of that period (a partial step to its
+///     grid time, events watched), then takes its own period: at most two steps per call, so one call per
+///     timer interrupt stays in step with the timer whatever fires. (If that call ends early in the rest of
+///     the earlier period, the state lags one more period; each later call gains one back.) reached() is the
+///     last grid time the state reached.
+///   - An error (non_finite, non_finite_event, a stepper's status, invalid_time once t0 + n dt overflows)
+///     does not count: the state is the last good one, at r.t, and the next call tries again from there.
+///   - At most max_rhs_evals_per_tick / max_g_evals_per_tick evaluations per call (two steps' worth).
+///
+///     odestep::event_stepper loop(odestep::rk4<state>{}, odestep::watch(ground));
+///     if (loop.start(0.0, 1e-3, y) != odestep::status::ok) { ... }
+///     for (;;) { auto r = loop.tick(f, y); if (r.fired) { ... r.firings[0].t ... } }
+///
+/// If the caller changes the state between ticks, `rearm(y)` re-reads the events' functions (and resets
+/// the stepper's history); otherwise crossings are measured from the last tick's values.
+template <class Stepper, class Set, std::size_t Capacity = 8>
+class event_stepper {
+public:
+    using stepper_type = Stepper;
+    using state_type = typename Stepper::state_type;
+    using value_type = value_type_t<state_type>;
+    using set_type = Set;
+    static constexpr std::size_t capacity = Capacity;
+    static constexpr std::size_t arity =
+        detail::event_arity<state_type, std::tuple_element_t<0, decltype(Set::events)>>();
+
+    constexpr event_stepper(Stepper stepper, Set events) : stepper_(stepper), set_(events) {
+        detail::require_self_starting<Stepper>();
+    }
+
+    /// Starts the clock at t0 with ticks of dt and reads every event function on the initial state. An event
+    /// whose function is zero there (or whose root lies within its tolerance after t0) does not fire at t0.
+    /// Limits whose work bounds do not fit std::size_t: status::invalid_setting, nothing touched.
+    template <class... States>
+    [[nodiscard]] status start(value_type t0, value_type dt, const States&... y) {
+        static_assert(sizeof...(States) == arity, "odestep: start(t0, dt, y) (Newtonian: start(t0, dt, x, v))");
+        const detail::grid_clock<value_type> clock{t0, dt};
+        const status checked = clock.check();
+        if (checked != status::ok) return checked;
+        const status limited = limits_ok();
+        if (limited != status::ok) return limited;
+        const std::array<const state_type*, arity> ptrs{&y...};
+        const status s = engine_.begin(set_, t0, ptrs);
+        if (s != status::ok) return s;
+        detail::reset_if_any(stepper_);
+        clock_ = clock;
+        n_ = 0;
+        lag_ = 0;
+        t_now_ = clock_.time(0);  // t0 + 0 dt, as every grid time
+        clock_state_ = clock_state::on_grid;
+        return status::ok;
+    }
+
+    /// Re-reads every event function at the current time, after the caller changed the state, and resets
+    /// the stepper's history. Firing counts are kept, and with them max_firings and the dead time: an event
+    /// that has used up its firings stays quiet. An event whose root lies within its tolerance after the
+    /// current time does not fire (call rearm at a stopped_by_event state and go on). On a failure
+    /// (non_finite_event, invalid_tolerance, invalid_setting) nothing changes.
+    template <class... States>
+    [[nodiscard]] status rearm(const States&... y) {
+        static_assert(sizeof...(States) == arity, "odestep: rearm(y) (Newtonian: rearm(x, v))");
+        if (clock_state_ == clock_state::idle) return status::invalid_time;
+        const status limited = limits_ok();
+        if (limited != status::ok) return limited;
+        const std::array<const state_type*, arity> ptrs{&y...};
+        const status s = engine_.reread(set_, time(), ptrs);
+        if (s != status::ok) return s;
+        detail::reset_if_any(stepper_);
+        return status::ok;
+    }
+
+    /// One tick: one period of the timer, to the grid time t0 + (ticks() + 1) dt (see the class comment).
+    /// Before `start`: status::invalid_time, nothing touched.
+    // (Always inlined: the caller's frame then holds the quiet tick's few values, and the rare paths' frames,
+    // rest and catch_up, are the only other ones on the stack.)
+    template <class System, class... States>
+    [[nodiscard]] ODESTEP_INLINE tick_result<value_type, Capacity> tick(System&& f, States&... y) {
+        static_assert(sizeof...(States) == arity, "odestep: tick(f, y) (Newtonian: tick(a, x, v))");
+        const std::array<state_type*, arity> ptrs{&y...};
+        if (ODESTEP_UNLIKELY(clock_state_ != clock_state::on_grid)) return catch_up(f, ptrs);
+        tick_result<T, Capacity> r;  // firings past `fired` stay unwritten: clearing them cost most of a quiet tick
+        r.status = status::ok;
+        r.t = t_now_;
+        r.fired = 0;
+        r.event = no_event;
+        // The time of the state (t_now_) is the last tick's end; the tick's end is converted from the counter
+        // after the step (on the grid nothing is kept across the step's call).
+        typename engine_type::pack start;
+        r.status = engine_type::step(stepper_, f, ptrs, t_now_, clock_.dt, start);
+        if (ODESTEP_UNLIKELY(r.status != status::ok)) return r;  // y untouched, at t_now_
+        const T t_end = grid_time();
+        typename engine_type::values g;
+        if (ODESTEP_UNLIKELY(!detail::is_finite(t_end) || !engine_.settle(set_, ptrs, t_end, g)))
+            return rest(f, ptrs, start, g, t_end);
+        ++n_;
+        t_now_ = t_end;
+        r.t = t_end;
+        return r;
+    }
+
+    /// The time of the state: t0 + reached() dt, or the time a tick stopped at.
+    constexpr value_type time() const noexcept { return t_now_; }
+    /// Periods counted: the calls of tick since start that did not return an error.
+    constexpr std::uint64_t ticks() const noexcept { return n_ + lag_; }
+    /// The last grid time the state reached is t0 + reached() dt: ticks(), or one less after a tick that
+    /// ended early (more only while catching up after early ends in a row).
+    constexpr std::uint64_t reached() const noexcept { return n_; }
+    /// Firings of event i since start.
+    constexpr std::size_t firings(std::size_t i) const noexcept { return engine_.memory[i].fired; }
+    /// The stepper, as the loop keeps it.
+    Stepper& stepper() noexcept { return stepper_; }
+    /// The events and their limits (changed limits are checked by the next rearm).
+    Set& events() noexcept { return set_; }
+
+private:
+    using T = value_type;
+    using engine_type = detail::event_engine<state_type, arity, Set>;
+    using ptrs_type = std::array<state_type*, arity>;
+
+    // The end of the step being taken, t0 + (n+1) dt, from the counter.
+    value_type grid_time() const noexcept { return clock_.time(n_ + 1); }
+
+    status limits_ok() const noexcept {
+        return detail::limits_status<Stepper, typename Set::finder, value_type>(Set::size, set_.limits);
+    }
+
+    static constexpr bool is_error(status s) noexcept {
+        return !(s == status::ok || s == status::stopped_by_event || s == status::event_limit);
+    }
+
+    // The quiet tick's step needs more than settle: a crossing (or probes, or a NaN from g), or a grid time
+    // that overflowed (then the step is undone: status::invalid_time, nothing else changes).
+    template <class System>
+    ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> rest(System& f, const ptrs_type& ptrs,
+                                                          typename engine_type::pack& start,
+                                                          const typename engine_type::values& g, T t_end) {
+        tick_result<T, Capacity> r;
+        r.status = status::ok;
+        r.t = t_now_;
+        r.fired = 0;
+        r.event = no_event;
+        if (!detail::is_finite(t_end)) {
+            for (std::size_t k = 0; k < arity; ++k) *ptrs[k] = start[k];
+            detail::reset_if_any(stepper_);
+            r.status = status::invalid_time;
+            return r;
+        }
+        const std::uint64_t target = n_ + 1;
+        finish_piece(f, ptrs, start, g, t_now_, clock_.dt, t_end, r);
+        account(r, target);
+        return r;
+    }
+
+    // A tick off the quiet path: before start, or after a tick that ended early (or failed inside its
+    // period). Up to two pieces, each to the next grid time: the rest of an earlier period, then this one's.
+    template <class System>
+    ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> catch_up(System& f, const ptrs_type& ptrs) {
+        tick_result<T, Capacity> r;
+        r.status = status::ok;
+        r.t = t_now_;
+        r.fired = 0;
+        r.event = no_event;
+        if (clock_state_ == clock_state::idle) {
+            r.status = status::invalid_time;
+            return r;
+        }
+        const std::uint64_t target = n_ + lag_ + 1;  // this call's period ends at t0 + target dt
+        for (int piece = 0; piece < 2 && r.status == status::ok && n_ < target; ++piece) {
+            const T t_end = grid_time();
+            if (!detail::is_finite(t_end)) {
+                r.status = status::invalid_time;
+                break;
+            }
+            // On the grid a step is dt (as in the quiet tick: a multistep history expects it); off it, back to
+            // the grid time.
+            const T h = off_grid_ ? t_end - t_now_ : clock_.dt;
+            if (h == T(0)) {  // an earlier tick stopped on this grid time
+                ++n_;
+                off_grid_ = false;
+                continue;
+            }
+            const bool partial = off_grid_;
+            typename engine_type::pack start;
+            const status s = engine_type::step(stepper_, f, ptrs, t_now_, h, start);
+            if (s != status::ok) {
+                r.status = s;
+                break;
+            }
+            typename engine_type::values g;
+            if (engine_.settle(set_, ptrs, t_end, g)) {
+                ++n_;
+                t_now_ = t_end;
+                off_grid_ = false;
+            } else {
+                finish_piece(f, ptrs, start, g, t_now_, h, t_end, r);
+            }
+            // A partial step (from where a tick stopped back to the grid) does not fit a multistep history.
+            if (partial) detail::reset_if_any(stepper_);
+        }
+        r.t = t_now_;
+        account(r, target);
+        return r;
+    }
+
+    // The rest of one piece after settle returned false: the engine's advance_rest, its firings appended to
+    // r's list, and the clock moved to where the piece ended.
+    template <class System>
+    void finish_piece(System& f, const ptrs_type& ptrs, typename engine_type::pack& start,
+                      const typename engine_type::values& g, T t_start, T h, T t_end, tick_result<T, Capacity>& r) {
+        const std::size_t offset = r.fired;
+        auto sink = [&r, offset](std::size_t k, std::size_t i, T t) {
+            if (offset + k < Capacity) r.firings[offset + k] = event_firing<T>{i, t};
+        };
+        const detail::step_outcome<T> a =
+            engine_.advance_rest(stepper_, f, set_, ptrs, start, g, t_start, h, t_end, sink);
+        r.status = a.code;
+        r.fired += a.fired;
+        r.event = a.event;
+        r.t = a.t;
+        t_now_ = a.t;
+        if (a.code == status::ok) {
+            ++n_;
+            off_grid_ = false;
+        } else if (!(a.t == t_start)) {
+            off_grid_ = true;
+        }
+    }
+
+    // After a tick that left the quiet path: the call counts one period unless it returned an error.
+    void account(const tick_result<T, Capacity>& r, std::uint64_t target) noexcept {
+        const std::uint64_t counted = is_error(r.status) ? target - 1 : target;
+        lag_ = counted > n_ ? counted - n_ : 0;
+        clock_state_ = lag_ == 0 && !off_grid_ ? clock_state::on_grid : clock_state::behind;
+    }
+
+    // idle: before start; on_grid: the state is at t0 + n dt and no period is owed; behind: the state is off
+    // the grid (a tick stopped inside its period) or periods are owed (lag_).
+    enum class clock_state : unsigned char { idle, on_grid, behind };
+
+    Stepper stepper_;
+    Set set_;
+    engine_type engine_{};
+    detail::grid_clock<value_type> clock_{};
+    value_type t_now_ = value_type(0);  // the time of the state: t0 + n dt, or where a tick stopped
+    std::uint64_t n_ = 0;    // the last grid time reached; 64 bits on every target (a 32-bit count of 1 kHz ticks
+                             // wraps after 49.7 days)
+    std::uint64_t lag_ = 0;  // periods counted beyond n_ (after ticks that ended early)
+    clock_state clock_state_ = clock_state::idle;
+    bool off_grid_ = false;  // the state is between t0 + n dt and t0 + (n+1) dt
+};
+
+/// make_event_stepper(stepper, watch(...)) with the default capacity; make_event_stepper<16>(...) lists up
+/// to 16 firings per tick.
+template <std::size_t Capacity = 8, class Stepper, class Set>
+constexpr event_stepper<Stepper, Set, Capacity> make_event_stepper(Stepper stepper, Set events) {
+    return event_stepper<Stepper, Set, Capacity>(stepper, events);
+}
+
+}  // namespace odestep
+
+#endif
