@@ -318,8 +318,10 @@ odestep_status odestep_event_loop_start_d(odestep_event_loop_d* loop, const odes
                                           const odestep_event_limits* limits, const odestep_system_d* system,
                                           const double* y, double t0, double dt);
 
-/// One tick: y from t0 + k dt to t0 + (k+1) dt (after a tick that stopped early, from there to that grid
-/// time), every crossing inside located, its action run on the state at that time. `tick` (may be null)
+/// One tick, one period of the timer: y from t0 + k dt to t0 + (k+1) dt, every crossing inside located, its
+/// action run on the state at that time. After a tick that stopped early, the call first completes that
+/// period, then takes its own (at most two steps), so that one call per interrupt keeps up with the timer;
+/// an error counts no period (the next call retries from the last good state). `tick` (may be null)
 /// gets the time and the firings. The status is ODESTEP_OK, ODESTEP_STOPPED_BY_EVENT, ODESTEP_EVENT_LIMIT
 /// or an error; y is always the state at tick->t. system->n must be the n of start.
 odestep_status odestep_event_loop_tick_d(odestep_event_loop_d* loop, const odestep_system_d* system, double* y,
@@ -534,8 +536,10 @@ odestep_status odestep_event_loop_start_f(odestep_event_loop_f* loop, const odes
                                           const odestep_event_limits* limits, const odestep_system_f* system,
                                           const float* y, float t0, float dt);
 
-/// One tick: y from t0 + k dt to t0 + (k+1) dt (after a tick that stopped early, from there to that grid
-/// time), every crossing inside located, its action run on the state at that time. `tick` (may be null)
+/// One tick, one period of the timer: y from t0 + k dt to t0 + (k+1) dt, every crossing inside located, its
+/// action run on the state at that time. After a tick that stopped early, the call first completes that
+/// period, then takes its own (at most two steps), so that one call per interrupt keeps up with the timer;
+/// an error counts no period (the next call retries from the last good state). `tick` (may be null)
 /// gets the time and the firings. The status is ODESTEP_OK, ODESTEP_STOPPED_BY_EVENT, ODESTEP_EVENT_LIMIT
 /// or an error; y is always the state at tick->t. system->n must be the n of start.
 odestep_status odestep_event_loop_tick_f(odestep_event_loop_f* loop, const odestep_system_f* system, float* y,
