@@ -5,7 +5,7 @@
 # board's 25 MHz timer then ticks every 40 instructions). Prints one line per variant and -O, and each
 # step function's size in bytes. Exits non-zero if a build, a run or the agreement check fails.
 #
-# Usage: scripts/bench-m4f.sh [extra compiler flags...]    e.g. -DODESTEP_STEP_FLATTEN= -DODESTEP_RK_UNROLL=
+# Usage: scripts/bench-m4f.sh [extra compiler flags...]    e.g. -DODESTEP_STEP_FLATTEN= -DODESTEP_STEP_UNROLL=
 # Needs arm-none-eabi-g++ with newlib and qemu-system-arm (Debian: gcc-arm-none-eabi libnewlib-arm-none-eabi
 # libstdc++-arm-none-eabi-newlib qemu-system-arm).
 set -uo pipefail

@@ -16,23 +16,25 @@
 #endif
 #endif
 
-// The explicit Runge-Kutta step's loops over the components (its stage inputs, the new state, the
-// estimates) are unrolled at every optimization level, -Os included: unrolled and with the right-hand side
-// inlined (ODESTEP_STEP_FLATTEN) the step is as small as the same step written out by hand, and half as
-// many instructions as the rolled loop at -Os (Lorenz RK4, x86-64: 105 against 213).
-#ifndef ODESTEP_RK_UNROLL
+// The loops over the components inside one step of the explicit Runge-Kutta steppers and of the Newtonian
+// ones (velocity Verlet, Beeman, the splittings) are unrolled at every optimization level, -Os included:
+// unrolled and with the right-hand side inlined (ODESTEP_STEP_FLATTEN) the step is as fast as the same step
+// written out by hand (x86-64 -Os, Lorenz RK4: 105 instructions against 213 rolled). Define it empty (with
+// ODESTEP_STEP_FLATTEN) for the rolled, smaller -Os code of before (docs/performance.md, "-Os").
+#ifndef ODESTEP_STEP_UNROLL
 #if defined(__GNUC__) || defined(__clang__)
-#define ODESTEP_RK_UNROLL _Pragma("GCC unroll 16")
+#define ODESTEP_STEP_UNROLL _Pragma("GCC unroll 16")
 #else
-#define ODESTEP_RK_UNROLL
+#define ODESTEP_STEP_UNROLL
 #endif
 #endif
 
-// Where the build optimizes for size, the explicit Runge-Kutta step inlines every call in it, the
-// right-hand side's included (GCC's and Clang's flatten), as the step written out by hand does: GCC at -Os
-// otherwise calls a right-hand side used four times out of line, and every value live across the calls
-// spills. Define it empty to keep a large right-hand side out of line (less flash, more instructions).
-// Other optimization levels inline the right-hand side by themselves.
+// Where the build optimizes for size, those steps inline every call in them, the right-hand side's (the
+// force's) included (GCC's and Clang's flatten), as the step written out by hand does: GCC at -Os otherwise
+// calls a right-hand side used several times out of line, and every value live across the calls spills.
+// The price is flash: the right-hand side is inlined once per evaluation. Define it empty to keep a large
+// right-hand side out of line (less flash, more instructions). Other optimization levels inline the
+// right-hand side by themselves.
 #ifndef ODESTEP_STEP_FLATTEN
 #if defined(__OPTIMIZE_SIZE__) && (defined(__GNUC__) || defined(__clang__))
 #define ODESTEP_STEP_FLATTEN [[gnu::flatten]]

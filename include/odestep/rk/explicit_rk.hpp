@@ -162,7 +162,7 @@ public:
         run_stages<false>(f, y, t, dt, k, next, std::make_index_sequence<S>{});
         constexpr std::size_t estimates = 0;
         T total = -T(0);  // x + (-0) is x, exactly: the compiler drops that first addition
-        ODESTEP_RK_UNROLL
+        ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
             if constexpr (!next_from_stage<false>) next[n] = y[n] + sum<b_weights>(k, n, dt);
             if constexpr (fused_total) {
@@ -191,7 +191,7 @@ public:
         constexpr std::size_t estimates = 1;
         State err;
         T total = -T(0);
-        ODESTEP_RK_UNROLL
+        ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
             if constexpr (!next_from_stage<true>) next[n] = y[n] + sum<b_weights>(k, n, dt);
             err[n] = sum<error_weights<0>>(k, n, dt);
@@ -224,7 +224,7 @@ public:
         State err;
         State err2;
         T total = -T(0);
-        ODESTEP_RK_UNROLL
+        ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
             if constexpr (!next_from_stage<true>) next[n] = y[n] + sum<b_weights>(k, n, dt);
             err[n] = sum<error_weights<0>>(k, n, dt);
@@ -257,7 +257,7 @@ private:
     // loop, which leaves it free to be vectorized.
     static constexpr bool fused_total = detail::optimizing_for_size;
     ODESTEP_INLINE static void add_all(T& total, const State& v) noexcept {
-        ODESTEP_RK_UNROLL
+        ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) total += v[n];
     }
     // The unchecked stages' values (unchecked_stages) in the finiteness test of a step that returns
@@ -277,7 +277,7 @@ private:
     }
     template <std::size_t Estimates>
     ODESTEP_INLINE static void add_stages(T& total, const std::array<State, S>& k) noexcept {
-        ODESTEP_RK_UNROLL
+        ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) add_stage_components<Estimates>(total, k, n);
     }
     template <std::size_t Estimates>
@@ -427,7 +427,7 @@ private:
             } else {
                 State input;
                 State& in = I == b_row ? next : input;  // the b row's input is y_{n+1}: kept as the new state
-                ODESTEP_RK_UNROLL
+                ODESTEP_STEP_UNROLL
                 for (std::size_t n = 0; n < N; ++n) in[n] = y[n] + sum<a_row<I>>(k, n, dt);
                 detail::evaluate(f, t + tab.c[I] * dt, static_cast<const State&>(in), k[I]);
             }
