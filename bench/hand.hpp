@@ -1,7 +1,16 @@
-// odestep benchmarks: the hand-written loops, as a careful engineer writes them without a library:
-// named coefficients, loop-invariant products such as h/2 and h/6 hoisted, plain `for` loops over the
-// components, no copies beyond the one stage input, and no NaN/Inf check (odestep's check is what the
-// comparison charges it for).
+// odestep benchmarks: the hand-written loops, the fastest a careful engineer writes without a library:
+// named coefficients, loop-invariant products such as h/2 and h/6 hoisted, every loop over the components
+// unrolled completely (BENCH_UNROLL) and the right-hand side inlined into the step (BENCH_HAND), at every
+// -O, so that each is as fast as the same step written out in scalars; no copies beyond the one stage
+// input, and no NaN/Inf check (odestep's check is what the comparison with these charges it for).
+//
+// Why unrolled and flattened (GCC 12.2, x86-64, callgrind instructions per step, Lorenz RK4): as plain
+// `for` loops over std::array, GCC unrolls none of them at -O2 (180 instructions; unrolled: 101) and at -Os
+// also calls the right-hand side out of line four times (204; unrolled alone: 185; unrolled and flattened:
+// 98). -O3 unrolls and vectorizes plain loops by itself: there the rolled loops were up to 3 % faster for
+// four cases (Lorenz RK4 97 against 101, DOPRI5 328/334, DOP853 2066/2106, RKF78 1948/1969) and slower for
+// others (three-body RK4 400/387, AB4 111/85); one source serves all three levels.
+// The three-body RK4 at -Os: 965 before, 684 now. The price is flash at -Os (RESULTS.md, code size).
 //
 // RK4 is the textbook y + h/6 (k1 + 2 (k2 + k3) + k4). DOPRI5 and DOP853 are written stage by stage as in
 // E. Hairer's dopri5.f and dop853.f (Y1(I) = Y(I) + H*(A31*K1(I) + A32*K2(I)) and so on, same coefficients),
@@ -15,13 +24,23 @@
 // gives: the new state is computed into locals, tested for NaN and Inf, and only then written back; if any
 // component is not finite (the right-hand side returned NaN or Inf, or the update overflowed) they return
 // `non_finite` and leave the caller's x and v (or y), and a kept acceleration, exactly as they were. They
-// return `ok` (0) otherwise. The arithmetic is the unchecked loop's, operation for operation.
+// return `ok` (0) otherwise. The arithmetic is the unchecked loop's, operation for operation. The sum that
+// the test reads is taken after the loop that computes the new state, not inside it: with the loops
+// unrolled that is as cheap or cheaper at every -O (three-body RK4 -O2: 414 against 645 fused; Lorenz RK4
+// 110 against 111, -Os 104 against 105; Lorenz AB4 -O2 94.5 against 96.5).
 #ifndef ODESTEP_BENCH_HAND_HPP
 #define ODESTEP_BENCH_HAND_HPP
 
 #include <array>
 #include <cstddef>
 #include <limits>
+
+/// Before every loop over the components: unrolled completely (up to 16 components) at every -O.
+#define BENCH_UNROLL _Pragma("GCC unroll 16")
+/// A hand-written step function: every call in it inlined (the right-hand side, the RK4 start of the Adams
+/// loops), as in the step written out by hand, also at -Os where GCC would call a right-hand side used four
+/// times out of line.
+#define BENCH_HAND [[gnu::flatten]] inline
 
 namespace bench::hand {
 
@@ -38,6 +57,7 @@ constexpr int non_finite = 1;
 template <class T, std::size_t N>
 inline bool each_finite(std::array<T, N> a) {
     constexpr T big = std::numeric_limits<T>::max();
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         if (!(a[i] >= -big && a[i] <= big)) return false;
     return true;
@@ -47,10 +67,10 @@ inline bool each_finite(std::array<T, N> a) {
 /// hold them. z = s - s is exactly 0 when s is finite and NaN when s is NaN or +-Inf, which it is as soon as
 /// one component is NaN or Inf (NaN propagates; an Inf stays Inf or meets the opposite Inf and gives NaN);
 /// z == z is false only for NaN. So a subtraction, a compare of z with itself and a branch, after the
-/// additions that form s (fused into the loop that computes the new state where there is one), prove every
+/// additions that form s (after the loop that computes the new state), prove every
 /// component finite. Only when the test fails, because a component is not finite or because finite
 /// components summed past the largest finite value, is each component tested on its own. Measured (GCC 12,
-/// instructions per step, the seven hand_checked cases at -O2 and -Os) against std::isfinite on every
+/// instructions per step, the seven hand_checked cases at -O2 and -Os, with the loops not yet unrolled) against std::isfinite on every
 /// component, no sum: that costs 3 to 7 instructions more per step on the Kepler steps that test x alone,
 /// the oscillator and Lorenz, 16 to 23 in kepler_verlet, 58 to 71 on the three-body problem. Always
 /// inlined, as it would be written by hand: GCC at -Os makes a function called from two places a call (the
@@ -65,56 +85,64 @@ template <class T, std::size_t... N>
 template <class T, std::size_t N>
 inline T sum(const std::array<T, N>& a) {
     T s = a[0];
+    BENCH_UNROLL
     for (std::size_t i = 1; i < N; ++i) s += a[i];
     return s;
 }
 
 /// Classic RK4: y <- y + h/6 (k1 + 2 (k2 + k3) + k4). f(t, y, dydt).
 template <class T, std::size_t N, class F>
-inline void rk4(F f, std::array<T, N>& y, T t, T h) {
+BENCH_HAND void rk4(F f, std::array<T, N>& y, T t, T h) {
     std::array<T, N> k1, k2, k3, k4, yt;
     const T h2 = h * T(0.5);
     const T h6 = h * (T(1) / T(6));
     f(t, y, k1);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) yt[i] = y[i] + h2 * k1[i];
     f(t + h2, yt, k2);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) yt[i] = y[i] + h2 * k2[i];
     f(t + h2, yt, k3);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) yt[i] = y[i] + h * k3[i];
     f(t + h, yt, k4);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y[i] += h6 * (k1[i] + T(2) * (k2[i] + k3[i]) + k4[i]);
 }
 
 /// rk4, checked: the same stages, the new state computed into the stage input yt (free after the last
-/// stage) with its sum taken in the same loop, tested, then copied into y. Written out rather than built on
+/// stage), its sum taken after that loop, tested, then copied into y. Written out rather than built on
 /// rk4 or on a stages function shared with it: either changes GCC's code for the unchecked rk4 (inlining
 /// and IPA decisions) by an instruction or two, and the `hand` rows are the reference.
 template <class T, std::size_t N, class F>
-inline int rk4_checked(F f, std::array<T, N>& y, T t, T h) {
+BENCH_HAND int rk4_checked(F f, std::array<T, N>& y, T t, T h) {
     std::array<T, N> k1, k2, k3, k4, yt;
     const T h2 = h * T(0.5);
     const T h6 = h * (T(1) / T(6));
     f(t, y, k1);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) yt[i] = y[i] + h2 * k1[i];
     f(t + h2, yt, k2);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) yt[i] = y[i] + h2 * k2[i];
     f(t + h2, yt, k3);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) yt[i] = y[i] + h * k3[i];
     f(t + h, yt, k4);
-    T s = -T(0);  // -0 + c is c for every c, so the first addition folds away where the loop is unrolled
-    for (std::size_t i = 0; i < N; ++i) {
-        yt[i] = y[i] + h6 * (k1[i] + T(2) * (k2[i] + k3[i]) + k4[i]);
-        s += yt[i];
-    }
-    if (!finite_state(s, yt)) return non_finite;
+    BENCH_UNROLL
+    for (std::size_t i = 0; i < N; ++i) yt[i] = y[i] + h6 * (k1[i] + T(2) * (k2[i] + k3[i]) + k4[i]);
+    if (!finite_state(sum(yt), yt)) return non_finite;
     y = yt;
     return ok;
 }
 
 /// Dormand-Prince 5(4) with its error estimate, as dopri5.f: the fifth-order solution is the seventh
-/// stage's input, and err = h (e1 k1 + e3 k3 + ... + e7 k7) with e = b - bhat.
-template <std::size_t N, class F>
-inline void dopri5(F f, std::array<double, N>& y, double t, double h, std::array<double, N>& err) {
+/// stage's input, and err = h (e1 k1 + e3 k3 + ... + e7 k7) with e = b - bhat. Checked (the
+/// `hand_checked` row): the new y, the estimate and k2 (weight 0 in both, so it reaches neither; a NaN
+/// there must fail the step as in odestep) summed and tested, y and err written only if finite; returns 0
+/// or non_finite. Unchecked: always 0.
+template <bool Checked = false, std::size_t N, class F>
+BENCH_HAND int dopri5(F f, std::array<double, N>& y, double t, double h, std::array<double, N>& err_out) {
     constexpr double c2 = 0.2, c3 = 0.3, c4 = 0.8, c5 = 8.0 / 9.0;
     constexpr double a21 = 0.2;
     constexpr double a31 = 3.0 / 40.0, a32 = 9.0 / 40.0;
@@ -126,30 +154,45 @@ inline void dopri5(F f, std::array<double, N>& y, double t, double h, std::array
                      a76 = 11.0 / 84.0;
     constexpr double e1 = 71.0 / 57600.0, e3 = -71.0 / 16695.0, e4 = 71.0 / 1920.0, e5 = -17253.0 / 339200.0,
                      e6 = 22.0 / 525.0, e7 = -1.0 / 40.0;
-    std::array<double, N> k1, k2, k3, k4, k5, k6, k7, y1;
+    std::array<double, N> k1, k2, k3, k4, k5, k6, k7, y1, e;
+    std::array<double, N>& err = Checked ? e : err_out;
     f(t, y, k1);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * a21 * k1[i];
     f(t + c2 * h, y1, k2);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a31 * k1[i] + a32 * k2[i]);
     f(t + c3 * h, y1, k3);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a41 * k1[i] + a42 * k2[i] + a43 * k3[i]);
     f(t + c4 * h, y1, k4);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a51 * k1[i] + a52 * k2[i] + a53 * k3[i] + a54 * k4[i]);
     f(t + c5 * h, y1, k5);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         y1[i] = y[i] + h * (a61 * k1[i] + a62 * k2[i] + a63 * k3[i] + a64 * k4[i] + a65 * k5[i]);
     f(t + h, y1, k6);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         y1[i] = y[i] + h * (a71 * k1[i] + a73 * k3[i] + a74 * k4[i] + a75 * k5[i] + a76 * k6[i]);
     f(t + h, y1, k7);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         err[i] = h * (e1 * k1[i] + e3 * k3[i] + e4 * k4[i] + e5 * k5[i] + e6 * k6[i] + e7 * k7[i]);
+    if constexpr (Checked) {
+        if (!finite_state(sum(y1) + sum(err) + sum(k2), y1, err, k2)) return non_finite;
+        err_out = err;
+    }
     y = y1;
+    return ok;
 }
 
 /// DOP853's eighth-order step (12 stages), as dop853.f, coefficients to the digits published there.
-template <std::size_t N, class F>
-inline void dop853(F f, std::array<double, N>& y, double t, double h) {
+/// Checked (`hand_checked`): the new y into a local, it and k2 to k5 (weight 0: they reach y only through
+/// later stages' inputs) summed and tested, y written only if finite; returns 0 or non_finite.
+template <bool Checked = false, std::size_t N, class F>
+BENCH_HAND int dop853(F f, std::array<double, N>& y, double t, double h) {
     constexpr double c2 = 0.526001519587677318785587544488e-01, c3 = 0.789002279381515978178381316732e-01,
                      c4 = 0.118350341907227396726757197510e+00, c5 = 0.281649658092772603273242802490e+00,
                      c6 = 0.333333333333333333333333333333e+00, c7 = 0.25e+00,
@@ -189,45 +232,69 @@ inline void dop853(F f, std::array<double, N>& y, double t, double h) {
                      b11 = 2.01365400804030348374776537501e-1, b12 = 4.47106157277725905176885569043e-2;
     std::array<double, N> k1, k2, k3, k4, k5, k6, k7, k8, k9, k10, k11, k12, y1;
     f(t, y, k1);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * a21 * k1[i];
     f(t + c2 * h, y1, k2);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a31 * k1[i] + a32 * k2[i]);
     f(t + c3 * h, y1, k3);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a41 * k1[i] + a43 * k3[i]);
     f(t + c4 * h, y1, k4);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a51 * k1[i] + a53 * k3[i] + a54 * k4[i]);
     f(t + c5 * h, y1, k5);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a61 * k1[i] + a64 * k4[i] + a65 * k5[i]);
     f(t + c6 * h, y1, k6);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a71 * k1[i] + a74 * k4[i] + a75 * k5[i] + a76 * k6[i]);
     f(t + c7 * h, y1, k7);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         y1[i] = y[i] + h * (a81 * k1[i] + a84 * k4[i] + a85 * k5[i] + a86 * k6[i] + a87 * k7[i]);
     f(t + c8 * h, y1, k8);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         y1[i] = y[i] + h * (a91 * k1[i] + a94 * k4[i] + a95 * k5[i] + a96 * k6[i] + a97 * k7[i] + a98 * k8[i]);
     f(t + c9 * h, y1, k9);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         y1[i] = y[i] + h * (a101 * k1[i] + a104 * k4[i] + a105 * k5[i] + a106 * k6[i] + a107 * k7[i] + a108 * k8[i] +
                             a109 * k9[i]);
     f(t + c10 * h, y1, k10);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         y1[i] = y[i] + h * (a111 * k1[i] + a114 * k4[i] + a115 * k5[i] + a116 * k6[i] + a117 * k7[i] + a118 * k8[i] +
                             a119 * k9[i] + a1110 * k10[i]);
     f(t + c11 * h, y1, k11);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         y1[i] = y[i] + h * (a121 * k1[i] + a124 * k4[i] + a125 * k5[i] + a126 * k6[i] + a127 * k7[i] + a128 * k8[i] +
                             a129 * k9[i] + a1210 * k10[i] + a1211 * k11[i]);
     f(t + h, y1, k12);
+    if constexpr (Checked) {
+        BENCH_UNROLL
+        for (std::size_t i = 0; i < N; ++i)
+            y1[i] = y[i] + h * (b1 * k1[i] + b6 * k6[i] + b7 * k7[i] + b8 * k8[i] + b9 * k9[i] + b10 * k10[i] +
+                                b11 * k11[i] + b12 * k12[i]);
+        if (!finite_state(sum(y1) + sum(k2) + sum(k3) + sum(k4) + sum(k5), y1, k2, k3, k4, k5)) return non_finite;
+        y = y1;
+        return ok;
+    }
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         y[i] += h * (b1 * k1[i] + b6 * k6[i] + b7 * k7[i] + b8 * k8[i] + b9 * k9[i] + b10 * k10[i] + b11 * k11[i] +
                      b12 * k12[i]);
+    return ok;
 }
 
 /// Runge-Kutta-Fehlberg 7(8), the eighth-order solution only (Fehlberg 1968, NASA TR R-287, Table X).
-/// Stage 11 feeds only the seventh-order solution and is skipped: 12 evaluations.
-template <std::size_t N, class F>
-inline void rkf78(F f, std::array<double, N>& y, double t, double h) {
+/// Stage 11 feeds only the seventh-order solution and is skipped: 12 evaluations. Checked (`hand_checked`):
+/// the new y into a local, it and k1 to k5 (weight 0) summed and tested, y written only if finite; returns 0
+/// or non_finite.
+template <bool Checked = false, std::size_t N, class F>
+BENCH_HAND int rkf78(F f, std::array<double, N>& y, double t, double h) {
     constexpr double c2 = 2.0 / 27.0, c3 = 1.0 / 9.0, c4 = 1.0 / 6.0, c5 = 5.0 / 12.0, c6 = 0.5, c7 = 5.0 / 6.0,
                      c8 = 1.0 / 6.0, c9 = 2.0 / 3.0, c10 = 1.0 / 3.0;
     constexpr double a21 = 2.0 / 27.0;
@@ -248,48 +315,73 @@ inline void rkf78(F f, std::array<double, N>& y, double t, double h) {
                      b12 = 41.0 / 840.0, b13 = 41.0 / 840.0;
     std::array<double, N> k1, k2, k3, k4, k5, k6, k7, k8, k9, k10, k12, k13, y1;
     f(t, y, k1);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * a21 * k1[i];
     f(t + c2 * h, y1, k2);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a31 * k1[i] + a32 * k2[i]);
     f(t + c3 * h, y1, k3);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a41 * k1[i] + a43 * k3[i]);
     f(t + c4 * h, y1, k4);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a51 * k1[i] + a53 * k3[i] + a54 * k4[i]);
     f(t + c5 * h, y1, k5);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a61 * k1[i] + a64 * k4[i] + a65 * k5[i]);
     f(t + c6 * h, y1, k6);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a71 * k1[i] + a74 * k4[i] + a75 * k5[i] + a76 * k6[i]);
     f(t + c7 * h, y1, k7);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y1[i] = y[i] + h * (a81 * k1[i] + a85 * k5[i] + a86 * k6[i] + a87 * k7[i]);
     f(t + c8 * h, y1, k8);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         y1[i] = y[i] + h * (a91 * k1[i] + a94 * k4[i] + a95 * k5[i] + a96 * k6[i] + a97 * k7[i] + a98 * k8[i]);
     f(t + c9 * h, y1, k9);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         y1[i] = y[i] + h * (a101 * k1[i] + a104 * k4[i] + a105 * k5[i] + a106 * k6[i] + a107 * k7[i] + a108 * k8[i] +
                             a109 * k9[i]);
     f(t + c10 * h, y1, k10);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         y1[i] = y[i] + h * (a121 * k1[i] + a126 * k6[i] + a127 * k7[i] + a128 * k8[i] + a129 * k9[i] + a1210 * k10[i]);
     f(t, y1, k12);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         y1[i] = y[i] + h * (a131 * k1[i] + a134 * k4[i] + a135 * k5[i] + a136 * k6[i] + a137 * k7[i] + a138 * k8[i] +
                             a139 * k9[i] + a1310 * k10[i] + a1312 * k12[i]);
     f(t + h, y1, k13);
+    if constexpr (Checked) {
+        BENCH_UNROLL
+        for (std::size_t i = 0; i < N; ++i)
+            y1[i] = y[i] + h * (b6 * k6[i] + b7 * k7[i] + b8 * k8[i] + b9 * k9[i] + b10 * k10[i] + b12 * k12[i] +
+                                b13 * k13[i]);
+        if (!finite_state(sum(y1) + sum(k1) + sum(k2) + sum(k3) + sum(k4) + sum(k5), y1, k1, k2, k3, k4, k5))
+            return non_finite;
+        y = y1;
+        return ok;
+    }
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         y[i] += h * (b6 * k6[i] + b7 * k7[i] + b8 * k8[i] + b9 * k9[i] + b10 * k10[i] + b12 * k12[i] + b13 * k13[i]);
+    return ok;
 }
 
 /// Velocity Verlet for x'' = a(x), with the acceleration at x kept between steps in `acc` (the caller sets
 /// it to a(x0) before the first step): x <- x + h v + h^2/2 a, a_new = a(x), v <- v + h/2 (a + a_new).
 /// One evaluation per step. f(t, x, acc).
 template <class T, std::size_t N, class F>
-inline void velocity_verlet(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, N>& acc, T t, T h) {
+BENCH_HAND void velocity_verlet(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, N>& acc, T t, T h) {
     const T hh2 = h * h * T(0.5);
     const T h2 = h * T(0.5);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) x[i] += h * v[i] + hh2 * acc[i];
     std::array<T, N> acc_new;
     f(t + h, x, acc_new);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) v[i] += h2 * (acc[i] + acc_new[i]);
     acc = acc_new;
 }
@@ -299,12 +391,14 @@ inline void velocity_verlet(F f, std::array<T, N>& x, std::array<T, N>& v, std::
 /// a_new is (h/2 times an Inf is Inf, or NaN for h = 0). x_new must be: the force may map a non-finite x
 /// to a finite acceleration. On failure x, v and acc are untouched.
 template <class T, std::size_t N, class F>
-inline int velocity_verlet_checked(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, N>& acc, T t, T h) {
+BENCH_HAND int velocity_verlet_checked(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, N>& acc, T t, T h) {
     const T hh2 = h * h * T(0.5);
     const T h2 = h * T(0.5);
     std::array<T, N> xn, vn, an;
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) xn[i] = x[i] + (h * v[i] + hh2 * acc[i]);
     f(t + h, xn, an);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) vn[i] = v[i] + h2 * (acc[i] + an[i]);
     if (!finite_state(sum(xn) + sum(vn), xn, vn)) return non_finite;
     x = xn;
@@ -320,9 +414,10 @@ inline int velocity_verlet_checked(F f, std::array<T, N>& x, std::array<T, N>& v
 /// Euler-Cromer (symplectic Euler, kick then drift): v <- v + h a(t, x), then x <- x + h v with the new v.
 /// One evaluation per step, nothing kept.
 template <class T, std::size_t N, class F>
-inline void euler_cromer(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
+BENCH_HAND void euler_cromer(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
     std::array<T, N> acc;
     f(t, x, acc);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) {
         v[i] += h * acc[i];
         x[i] += h * v[i];
@@ -333,9 +428,10 @@ inline void euler_cromer(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h
 /// The step ends with a drift x += c v_new, so x_new[i] is finite only if v_new[i] is (c v_new[i] is NaN or
 /// Inf for a NaN or Inf v_new[i], even for c = 0): testing x_new tests the whole new state.
 template <class T, std::size_t N, class F>
-inline int euler_cromer_checked(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
+BENCH_HAND int euler_cromer_checked(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
     std::array<T, N> acc, xn, vn;
     f(t, x, acc);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) {
         vn[i] = v[i] + h * acc[i];
         xn[i] = x[i] + h * vn[i];
@@ -349,11 +445,13 @@ inline int euler_cromer_checked(F f, std::array<T, N>& x, std::array<T, N>& v, T
 /// Position Verlet (leapfrog, drift-kick-drift): x <- x + h/2 v, v <- v + h a(t + h/2, x), x <- x + h/2 v.
 /// One evaluation per step, nothing kept.
 template <class T, std::size_t N, class F>
-inline void position_verlet(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
+BENCH_HAND void position_verlet(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
     const T h2 = h * T(0.5);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) x[i] += h2 * v[i];
     std::array<T, N> acc;
     f(t + h2, x, acc);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) {
         v[i] += h * acc[i];
         x[i] += h2 * v[i];
@@ -364,11 +462,13 @@ inline void position_verlet(F f, std::array<T, N>& x, std::array<T, N>& v, T t, 
 /// The step ends with a drift x += c v_new, so x_new[i] is finite only if v_new[i] is (c v_new[i] is NaN or
 /// Inf for a NaN or Inf v_new[i], even for c = 0): testing x_new tests the whole new state.
 template <class T, std::size_t N, class F>
-inline int position_verlet_checked(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
+BENCH_HAND int position_verlet_checked(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
     const T h2 = h * T(0.5);
     std::array<T, N> xn, vn, acc;
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) xn[i] = x[i] + h2 * v[i];
     f(t + h2, xn, acc);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) {
         vn[i] = v[i] + h * acc[i];
         xn[i] += h2 * vn[i];
@@ -396,25 +496,29 @@ struct forest_ruth_coefficients {
 /// rounded once to T, as odestep's detail::splitting_coefficients does; the time of each kick is the
 /// drift coefficients before it, summed in T. Three evaluations per step, nothing kept.
 template <class T, std::size_t N, class F>
-inline void forest_ruth(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
+BENCH_HAND void forest_ruth(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
     using coefficients = forest_ruth_coefficients<T>;
     constexpr T d_outer = coefficients::d_outer, d_inner = coefficients::d_inner;
     constexpr T k_outer = coefficients::k_outer, k_inner = coefficients::k_inner;
     constexpr T c1 = coefficients::c1, c2 = coefficients::c2, c3 = coefficients::c3;
     const T hd_outer = d_outer * h, hd_inner = d_inner * h, hk_outer = k_outer * h, hk_inner = k_inner * h;
     std::array<T, N> acc;
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) x[i] += hd_outer * v[i];
     f(t + c1 * h, x, acc);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) {
         v[i] += hk_outer * acc[i];
         x[i] += hd_inner * v[i];
     }
     f(t + c2 * h, x, acc);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) {
         v[i] += hk_inner * acc[i];
         x[i] += hd_inner * v[i];
     }
     f(t + c3 * h, x, acc);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) {
         v[i] += hk_outer * acc[i];
         x[i] += hd_outer * v[i];
@@ -425,22 +529,26 @@ inline void forest_ruth(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h)
 /// The step ends with a drift x += c v_new, so x_new[i] is finite only if v_new[i] is (c v_new[i] is NaN or
 /// Inf for a NaN or Inf v_new[i], even for c = 0): testing x_new tests the whole new state.
 template <class T, std::size_t N, class F>
-inline int forest_ruth_checked(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
+BENCH_HAND int forest_ruth_checked(F f, std::array<T, N>& x, std::array<T, N>& v, T t, T h) {
     using c = forest_ruth_coefficients<T>;
     const T hd_outer = c::d_outer * h, hd_inner = c::d_inner * h, hk_outer = c::k_outer * h, hk_inner = c::k_inner * h;
     std::array<T, N> xn, vn, acc;
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) xn[i] = x[i] + hd_outer * v[i];
     f(t + c::c1 * h, xn, acc);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) {
         vn[i] = v[i] + hk_outer * acc[i];
         xn[i] += hd_inner * vn[i];
     }
     f(t + c::c2 * h, xn, acc);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) {
         vn[i] += hk_inner * acc[i];
         xn[i] += hd_inner * vn[i];
     }
     f(t + c::c3 * h, xn, acc);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) {
         vn[i] += hk_outer * acc[i];
         xn[i] += hd_outer * vn[i];
@@ -456,8 +564,8 @@ inline int forest_ruth_checked(F f, std::array<T, N>& x, std::array<T, N>& v, T 
 /// The caller sets acc = a(x0) and started = false before a run: the run's first step, which has no
 /// a_{n-1}, is one velocity Verlet step (above), as odestep's beeman self-starts. One evaluation per step.
 template <class T, std::size_t N, class F>
-inline void beeman(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, N>& acc, std::array<T, N>& acc_prev,
-                   bool& started, T t, T h) {
+BENCH_HAND void beeman(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, N>& acc, std::array<T, N>& acc_prev,
+                       bool& started, T t, T h) {
     if (!started) {
         started = true;
         acc_prev = acc;
@@ -466,9 +574,11 @@ inline void beeman(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, 
     }
     const T hh6 = h * h * (T(1) / T(6));
     const T h6 = h * (T(1) / T(6));
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) x[i] += h * v[i] + hh6 * (T(4) * acc[i] - acc_prev[i]);
     std::array<T, N> acc_new;
     f(t + h, x, acc_new);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) v[i] += h6 * (T(2) * acc_new[i] + T(5) * acc[i] - acc_prev[i]);
     acc_prev = acc;
     acc = acc_new;
@@ -479,8 +589,8 @@ inline void beeman(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, 
 /// velocity_verlet_checked). The first step is velocity_verlet_checked. On failure x, v, acc, acc_prev and
 /// started are untouched. Returns 0 or non_finite.
 template <class T, std::size_t N, class F>
-inline int beeman_checked(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, N>& acc,
-                          std::array<T, N>& acc_prev, bool& started, T t, T h) {
+BENCH_HAND int beeman_checked(F f, std::array<T, N>& x, std::array<T, N>& v, std::array<T, N>& acc,
+                              std::array<T, N>& acc_prev, bool& started, T t, T h) {
     if (!started) {
         const std::array<T, N> a0 = acc;
         if (velocity_verlet_checked(f, x, v, acc, t, h) != ok) return non_finite;
@@ -491,8 +601,10 @@ inline int beeman_checked(F f, std::array<T, N>& x, std::array<T, N>& v, std::ar
     const T hh6 = h * h * (T(1) / T(6));
     const T h6 = h * (T(1) / T(6));
     std::array<T, N> xn, vn, an;
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) xn[i] = x[i] + (h * v[i] + hh6 * (T(4) * acc[i] - acc_prev[i]));
     f(t + h, xn, an);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) vn[i] = v[i] + h6 * (T(2) * an[i] + T(5) * acc[i] - acc_prev[i]);
     if (!finite_state(sum(xn) + sum(vn), xn, vn)) return non_finite;
     x = xn;
@@ -517,7 +629,7 @@ struct ab4_history {
 /// the step is rk4 (above), and f(t, y) is recorded (evaluated once more: the first three steps only), as
 /// odestep's adams starts.
 template <class T, std::size_t N, class F>
-inline void adams_bashforth4(F f, std::array<T, N>& y, ab4_history<T, N>& hist, T t, T h) {
+BENCH_HAND void adams_bashforth4(F f, std::array<T, N>& y, ab4_history<T, N>& hist, T t, T h) {
     std::array<T, N> fn;
     f(t, y, fn);
     if (hist.known < 3) {
@@ -531,17 +643,18 @@ inline void adams_bashforth4(F f, std::array<T, N>& y, ab4_history<T, N>& hist, 
     const std::array<T, N>& f2 = hist.past[hist.slot == 2 ? 0 : hist.slot + 1];
     std::array<T, N>& f3 = hist.past[hist.slot];
     const T h24 = h * (T(1) / T(24));
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y[i] += h24 * (T(55) * fn[i] - T(59) * f1[i] + T(37) * f2[i] - T(9) * f3[i]);
     f3 = fn;  // the oldest slot takes the newest
     hist.slot = hist.slot == 2 ? 0 : hist.slot + 1;
 }
 
-/// adams_bashforth4, checked: the new state into a local with its sum, tested, then written with the
+/// adams_bashforth4, checked: the new state into a local, its sum tested, then written with the
 /// history; f_n needs no test of its own once the formula uses it (55 h/24 times a NaN or Inf is not
 /// finite, nor is a sum with it). The RK4 start tests f(t, y) too, which only the history reads. On
 /// failure y and hist are untouched.
 template <class T, std::size_t N, class F>
-inline int adams_bashforth4_checked(F f, std::array<T, N>& y, ab4_history<T, N>& hist, T t, T h) {
+BENCH_HAND int adams_bashforth4_checked(F f, std::array<T, N>& y, ab4_history<T, N>& hist, T t, T h) {
     std::array<T, N> fn;
     f(t, y, fn);
     std::array<T, N> yn;
@@ -553,12 +666,10 @@ inline int adams_bashforth4_checked(F f, std::array<T, N>& y, ab4_history<T, N>&
         const std::array<T, N>& f2 = hist.past[hist.slot == 2 ? 0 : hist.slot + 1];
         const std::array<T, N>& f3 = hist.past[hist.slot];
         const T h24 = h * (T(1) / T(24));
-        T s = -T(0);
-        for (std::size_t i = 0; i < N; ++i) {
+        BENCH_UNROLL
+        for (std::size_t i = 0; i < N; ++i)
             yn[i] = y[i] + h24 * (T(55) * fn[i] - T(59) * f1[i] + T(37) * f2[i] - T(9) * f3[i]);
-            s += yn[i];
-        }
-        if (!finite_state(s, yn)) return non_finite;
+        if (!finite_state(sum(yn), yn)) return non_finite;
     }
     y = yn;
     hist.past[hist.slot] = fn;
@@ -571,7 +682,7 @@ inline int adams_bashforth4_checked(F f, std::array<T, N>& y, ab4_history<T, N>&
 /// p = y + h/24 (55 f_n - 59 f_{n-1} + 37 f_{n-2} - 9 f_{n-3}), evaluate f(t + h, p), correct
 /// y <- y + h/24 (9 f(t + h, p) + 19 f_n - 5 f_{n-1} + f_{n-2}). Two evaluations per step once started.
 template <class T, std::size_t N, class F>
-inline void adams_bashforth_moulton4(F f, std::array<T, N>& y, ab4_history<T, N>& hist, T t, T h) {
+BENCH_HAND void adams_bashforth_moulton4(F f, std::array<T, N>& y, ab4_history<T, N>& hist, T t, T h) {
     std::array<T, N> fn;
     f(t, y, fn);
     if (hist.known < 3) {
@@ -586,18 +697,20 @@ inline void adams_bashforth_moulton4(F f, std::array<T, N>& y, ab4_history<T, N>
     std::array<T, N>& f3 = hist.past[hist.slot];
     const T h24 = h * (T(1) / T(24));
     std::array<T, N> p, fp;
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i)
         p[i] = y[i] + h24 * (T(55) * fn[i] - T(59) * f1[i] + T(37) * f2[i] - T(9) * f3[i]);
     f(t + h, p, fp);
+    BENCH_UNROLL
     for (std::size_t i = 0; i < N; ++i) y[i] += h24 * (T(9) * fp[i] + T(19) * fn[i] - T(5) * f1[i] + f2[i]);
     f3 = fn;
     hist.slot = hist.slot == 2 ? 0 : hist.slot + 1;
 }
 
-/// adams_bashforth_moulton4, checked as adams_bashforth4_checked: the corrected y into a local with its
-/// sum (f(t + h, p) and f_n enter it with non-zero weights), tested, then written with the history.
+/// adams_bashforth_moulton4, checked as adams_bashforth4_checked: the corrected y into a local, its sum
+/// tested (f(t + h, p) and f_n enter it with non-zero weights), tested, then written with the history.
 template <class T, std::size_t N, class F>
-inline int adams_bashforth_moulton4_checked(F f, std::array<T, N>& y, ab4_history<T, N>& hist, T t, T h) {
+BENCH_HAND int adams_bashforth_moulton4_checked(F f, std::array<T, N>& y, ab4_history<T, N>& hist, T t, T h) {
     std::array<T, N> fn;
     f(t, y, fn);
     std::array<T, N> yn;
@@ -610,15 +723,13 @@ inline int adams_bashforth_moulton4_checked(F f, std::array<T, N>& y, ab4_histor
         const std::array<T, N>& f3 = hist.past[hist.slot];
         const T h24 = h * (T(1) / T(24));
         std::array<T, N> p, fp;
+        BENCH_UNROLL
         for (std::size_t i = 0; i < N; ++i)
             p[i] = y[i] + h24 * (T(55) * fn[i] - T(59) * f1[i] + T(37) * f2[i] - T(9) * f3[i]);
         f(t + h, p, fp);
-        T s = -T(0);
-        for (std::size_t i = 0; i < N; ++i) {
-            yn[i] = y[i] + h24 * (T(9) * fp[i] + T(19) * fn[i] - T(5) * f1[i] + f2[i]);
-            s += yn[i];
-        }
-        if (!finite_state(s, yn)) return non_finite;
+        BENCH_UNROLL
+        for (std::size_t i = 0; i < N; ++i) yn[i] = y[i] + h24 * (T(9) * fp[i] + T(19) * fn[i] - T(5) * f1[i] + f2[i]);
+        if (!finite_state(sum(yn), yn)) return non_finite;
     }
     y = yn;
     hist.past[hist.slot] = fn;

@@ -29,6 +29,9 @@ BENCH_STEP int bench_step_lorenz_dopri5_hand(State& y, State& err, double t, dou
     bench::hand::dopri5(rhs, y, t, dt, err);
     return 0;
 }
+BENCH_STEP int bench_step_lorenz_dopri5_hand_checked(State& y, State& err, double t, double dt) {
+    return bench::hand::dopri5<true>(rhs, y, t, dt, err);
+}
 BENCH_STEP int bench_step_lorenz_dopri5_odeint(State& y, State& err, double t, double dt) {
     odeint_dopri5.reset();  // forget the carried-over derivative: evaluate k1, as the others do
     odeint_dopri5.do_step(odeint_rhs, y, t, dt, err);
@@ -61,6 +64,10 @@ int main(int argc, char** argv) {
                                 bench_step_lorenz_dopri5_odestep, true},
                                {"hand", "hand-written DOPRI5 with error, dopri5.f stage by stage (7 evaluations)",
                                 bench_step_lorenz_dopri5_hand, true},
+                               {"hand_checked",
+                                "the hand loop, checked: NaN/Inf in the new y, the estimate or k2 (weight 0) fails the "
+                                "step, which is rolled back",
+                                bench_step_lorenz_dopri5_hand_checked, true},
                                {"odeint", "Odeint runge_kutta_dopri5 reset() + do_step with error (7 evaluations)",
                                 bench_step_lorenz_dopri5_odeint, true},
                                {"odeint_fsal", "Odeint runge_kutta_dopri5 do_step with error, FSAL (6 evaluations)",

@@ -28,6 +28,9 @@ BENCH_STEP int bench_step_threebody_dop853_hand(State& y, State&, double t, doub
     bench::hand::dop853(rhs, y, t, dt);
     return 0;
 }
+BENCH_STEP int bench_step_threebody_dop853_hand_checked(State& y, State&, double t, double dt) {
+    return bench::hand::dop853<true>(rhs, y, t, dt);
+}
 BENCH_STEP int bench_step_threebody_dop853_odeint(State& y, State&, double t, double dt) {
     odeint_rkf78.do_step(odeint_rhs, y, t, dt);
     return 0;
@@ -54,6 +57,10 @@ int main(int argc, char** argv) {
         argc, argv, p,
         {{"odestep", "odestep::dop853 (12 evaluations)", bench_step_threebody_dop853_odestep, true},
          {"hand", "hand-written DOP853, dop853.f stage by stage", bench_step_threebody_dop853_hand, true},
+         {"hand_checked",
+          "the hand loop, checked: NaN/Inf in the new y or in a zero-weight stage (k2..k5) fails the step, which is "
+          "rolled back",
+          bench_step_threebody_dop853_hand_checked, true},
          {"odeint", "Odeint runge_kutta_fehlberg78 (no DOP853 in Odeint; 13 evaluations)",
           bench_step_threebody_dop853_odeint, false},
          {"gsl", "GSL rk8pd (no DOP853 in GSL; 13 evaluations, error estimate)", bench_step_threebody_dop853_gsl,

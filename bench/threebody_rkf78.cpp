@@ -21,6 +21,9 @@ BENCH_STEP int bench_step_threebody_rkf78_hand(State& y, State&, double t, doubl
     bench::hand::rkf78(rhs, y, t, dt);
     return 0;
 }
+BENCH_STEP int bench_step_threebody_rkf78_hand_checked(State& y, State&, double t, double dt) {
+    return bench::hand::rkf78<true>(rhs, y, t, dt);
+}
 BENCH_STEP int bench_step_threebody_rkf78_odeint(State& y, State&, double t, double dt) {
     odeint_rkf78.do_step(odeint_rhs, y, t, dt);
     return 0;
@@ -43,6 +46,10 @@ int main(int argc, char** argv) {
                                 bench_step_threebody_rkf78_odestep, true},
                                {"hand", "hand-written RKF78 eighth-order step, stage by stage (12 evaluations)",
                                 bench_step_threebody_rkf78_hand, true},
+                               {"hand_checked",
+                                "the hand loop, checked: NaN/Inf in the new y or in a zero-weight stage (k1..k5) fails "
+                                "the step, which is rolled back",
+                                bench_step_threebody_rkf78_hand_checked, true},
                                {"odeint", "Odeint runge_kutta_fehlberg78 do_step (13 evaluations)",
                                 bench_step_threebody_rkf78_odeint, true}});
 }

@@ -16,6 +16,33 @@
 #endif
 #endif
 
+// The loops over the components inside one step of the explicit Runge-Kutta steppers and of the Newtonian
+// ones (velocity Verlet, Beeman, the splittings) are unrolled at every optimization level, -Os included:
+// unrolled and with the right-hand side inlined (ODESTEP_STEP_FLATTEN) the step is as fast as the same step
+// written out by hand (x86-64 -Os, Lorenz RK4: 105 instructions against 213 rolled). Define it empty (with
+// ODESTEP_STEP_FLATTEN) for the rolled, smaller -Os code of before (docs/performance.md, "-Os").
+#ifndef ODESTEP_STEP_UNROLL
+#if defined(__GNUC__) || defined(__clang__)
+#define ODESTEP_STEP_UNROLL _Pragma("GCC unroll 16")
+#else
+#define ODESTEP_STEP_UNROLL
+#endif
+#endif
+
+// Where the build optimizes for size, those steps inline every call in them, the right-hand side's (the
+// force's) included (GCC's and Clang's flatten), as the step written out by hand does: GCC at -Os otherwise
+// calls a right-hand side used several times out of line, and every value live across the calls spills.
+// The price is flash: the right-hand side is inlined once per evaluation. Define it empty to keep a large
+// right-hand side out of line (less flash, more instructions). Other optimization levels inline the
+// right-hand side by themselves.
+#ifndef ODESTEP_STEP_FLATTEN
+#if defined(__OPTIMIZE_SIZE__) && (defined(__GNUC__) || defined(__clang__))
+#define ODESTEP_STEP_FLATTEN [[gnu::flatten]]
+#else
+#define ODESTEP_STEP_FLATTEN
+#endif
+#endif
+
 // The stepper's per-component arithmetic is written as small functions over the table (one per weight row,
 // class of terms, ...); they are expression fragments, meant to be inlined where they are used whatever
 // the optimization level (at -Os a fragment used twice could otherwise stay a call inside the loop).

@@ -50,7 +50,7 @@ public:
 
     /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
-    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) const {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) const {
         const State acc = detail::acceleration(a, t, x, v);
         const State x1 = detail::plus_scaled(x, dt, v);    // x_{n+1} = x_n + v_n dt
         const State v1 = detail::plus_scaled(v, dt, acc);  // v_{n+1} = v_n + a_n dt
@@ -70,13 +70,13 @@ public:
 
     /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
-    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) const {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) const {
         using T = value_type;
         const State acc = detail::acceleration(a, t, x, v);
         State x1;
         State v1;
         const T half = dt / T(2);
-        ODESTEP_UNROLL
+        ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < x1.size(); ++n) {
             v1[n] = v[n] + acc[n] * dt;
             x1[n] = x[n] + (v[n] + v1[n]) * half;
@@ -106,7 +106,7 @@ public:
 
     /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
-    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) const {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) const {
         State ex;
         State ev;
         return advance(a, x, v, t, dt, ex, ev);
@@ -114,8 +114,8 @@ public:
 
     /// As above, and (error_x, error_v) = the (x, v) step minus the Euler step from the same start.
     template <class Accel>
-    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt, State& error_x,
-                              State& error_v) const {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt,
+                                                   State& error_x, State& error_v) const {
         return advance(a, x, v, t, dt, error_x, error_v);
     }
 
@@ -132,7 +132,7 @@ private:
         State v1;
         State ex;
         State ev;
-        ODESTEP_UNROLL
+        ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < x1.size(); ++n) {
             x1[n] = x[n] + v_mid[n] * dt;
             v1[n] = v[n] + a_mid[n] * dt;
@@ -166,7 +166,7 @@ public:
 
     /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
-    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
         using T = value_type;
         const T half = dt / T(2);
         State v_half;
@@ -210,23 +210,23 @@ public:
 
     /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
-    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
         using T = value_type;
         const T dt2 = dt * dt;
         State x1;
         const bool continuing = next_.matches(t, dt, x);
         if (continuing) {
-            ODESTEP_UNROLL
+            ODESTEP_STEP_UNROLL
             for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = T(2) * x[n] - x_prev_[n] + a_next_[n] * dt2;
         } else {
             const State a0 = detail::acceleration(a, t, x);
-            ODESTEP_UNROLL
+            ODESTEP_STEP_UNROLL
             for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + a0[n] * (dt2 / T(2));
         }
         const State a1 = detail::acceleration(a, t + dt, x1);
         State v1;
         const T two_dt = T(2) * dt;
-        ODESTEP_UNROLL
+        ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < v1.size(); ++n) {
             const T x2 = T(2) * x1[n] - x[n] + a1[n] * dt2;  // x_{n+2}
             v1[n] = (x2 - x[n]) / two_dt;                    // v_{n+1} = (x_{n+2} - x_n) / (2 dt)
@@ -281,7 +281,7 @@ public:
     /// (x, v) <- (x, v)(t + dt), the history kept and checked by the stepper. On status::non_finite x and v
     /// are left exactly as they were.
     template <class Accel>
-    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
         const bool continuing = next_.matches(t, dt, x);
         const status s = advance(a, x, v, t, dt, continuing, kept_.acc, kept_.acc_prev);
         if (s == status::ok) next_.expect(t, dt, x, continuing);
@@ -291,7 +291,8 @@ public:
     /// (x, v) <- (x, v)(t + dt), the history kept by the caller in hist (see above). On status::non_finite
     /// x, v and hist are left exactly as they were. hist is an object of its own (not part of x or v).
     template <class Accel>
-    [[nodiscard]] status step(Accel&& a, State& x, State& v, history& hist, value_type t, value_type dt) const {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(Accel&& a, State& x, State& v, history& hist, value_type t,
+                                                   value_type dt) const {
         const status s = advance(a, x, v, t, dt, hist.started, hist.acc, hist.acc_prev);
         if (s == status::ok) hist.started = true;
         return s;
@@ -314,19 +315,19 @@ private:
         // The choice made once per step, not in every component (at -Os the loops stay loops).
         State x1;
         if (continuing) {
-            ODESTEP_UNROLL
+            ODESTEP_STEP_UNROLL
             for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + (T(4) * a0[n] - a_prev[n]) * dt2_6;
         } else {
-            ODESTEP_UNROLL
+            ODESTEP_STEP_UNROLL
             for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + a0[n] * (dt * dt / T(2));
         }
         const State a1 = detail::acceleration(a, t + dt, x1, v);  // a(t, x, v): the velocity at hand, v_n
         State v1;
         if (continuing) {
-            ODESTEP_UNROLL
+            ODESTEP_STEP_UNROLL
             for (std::size_t n = 0; n < v1.size(); ++n) v1[n] = v[n] + (T(2) * a1[n] + T(5) * a0[n] - a_prev[n]) * dt_6;
         } else {
-            ODESTEP_UNROLL
+            ODESTEP_STEP_UNROLL
             for (std::size_t n = 0; n < v1.size(); ++n) v1[n] = v[n] + (a0[n] + a1[n]) * (dt / T(2));
         }
         // a1 needs no test of its own: v1 is +-Inf or NaN when it is (0 Inf is NaN, for dt = 0 too).
@@ -370,7 +371,7 @@ public:
 
     /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
-    [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(Accel&& a, State& x, State& v, value_type t, value_type dt) {
         using T = value_type;
         if (settings_status() != status::ok) return status::invalid_tolerance;
         const State a0 = detail::acceleration(a, t, x, v);
@@ -379,7 +380,7 @@ public:
         if (continuing) {
             xp = detail::plus_scaled(x_prev_, T(2) * dt, v);  // x_p = x_{n-1} + 2 v_n dt
         } else {
-            ODESTEP_UNROLL
+            ODESTEP_STEP_UNROLL
             for (std::size_t n = 0; n < xp.size(); ++n) xp[n] = x[n] + v[n] * dt + a0[n] * (dt * dt / T(2));
         }
         State vp = detail::plus_scaled(v, dt, a0);
@@ -390,7 +391,7 @@ public:
             State v1;
             T change = T(0);
             T size = T(0);
-            ODESTEP_UNROLL
+            ODESTEP_STEP_UNROLL
             for (std::size_t n = 0; n < x1.size(); ++n) {
                 v1[n] = v[n] + (ap[n] + a0[n]) * half;
                 x1[n] = x[n] + (v1[n] + v[n]) * half;

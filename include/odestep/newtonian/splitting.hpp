@@ -146,14 +146,14 @@ public:
 
     /// (x, v) <- (x, v)(t + dt). On `status::non_finite` x and v are left exactly as they were.
     template <class Accel, bool F = fsal, std::enable_if_t<!F, int> = 0>
-    [[nodiscard]] status step(Accel&& a, State& x, State& v, T t, T dt) const {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(Accel&& a, State& x, State& v, T t, T dt) const {
         return advance<false>(a, x, v, t, dt, nullptr, nullptr);
     }
 
     /// As above; the acceleration of the last kick is kept for the next step (not when the step fails). With
     /// a force a(t, x, v) nothing is kept: the last kick's velocity is not the next step's.
     template <class Accel, bool F = fsal, std::enable_if_t<F, int> = 0>
-    [[nodiscard]] status step(Accel&& a, State& x, State& v, T t, T dt) {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(Accel&& a, State& x, State& v, T t, T dt) {
         if constexpr (is_velocity_force_v<Accel, State, T>) {
             return advance<false>(a, x, v, t, dt, nullptr, nullptr);
         } else {
@@ -169,7 +169,7 @@ public:
     /// On status::non_finite x, v and acc are left exactly as they were. acc is an object of its own (not
     /// x or v). A force of position alone only.
     template <class Accel, bool F = fsal, std::enable_if_t<F, int> = 0>
-    [[nodiscard]] status step(Accel&& a, State& x, State& v, State& acc, T t, T dt) const {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(Accel&& a, State& x, State& v, State& acc, T t, T dt) const {
         static_assert(is_position_force_v<Accel, State, T>,
                       "odestep: a caller-kept acceleration needs a force of position alone, a(t, x): with "
                       "a(t, x, v) the last kick's acceleration is not the next step's first");
@@ -231,10 +231,10 @@ private:
         // a v component that is +-Inf or NaN, h v is +-Inf or NaN (h = 0 included: 0 Inf is NaN), and so is
         // x plus it, whatever x. So a finite new x proves the new v finite, and half the test goes.
         T total = -T(0);  // x + (-0) is x, exactly: the compiler drops that first addition
-        ODESTEP_UNROLL
+        ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) total += wx[n];
         if constexpr (ends_with_kick) {
-            ODESTEP_UNROLL
+            ODESTEP_STEP_UNROLL
             for (std::size_t n = 0; n < N; ++n) total += wv[n];
         }
         if (!detail::finite_sum(total) && !(detail::each_finite(wx) && (!ends_with_kick || detail::each_finite(wv))))
@@ -263,7 +263,7 @@ private:
             const State& px = plan::drift_before(K) ? wx : x;
             const State& pv = (!lazy_velocity || plan::kick_before(K)) ? wv : v;
             if constexpr (!plan::is_kick(K)) {
-                ODESTEP_UNROLL
+                ODESTEP_STEP_UNROLL
                 for (std::size_t n = 0; n < N; ++n) wx[n] = px[n] + h * pv[n];
             } else if constexpr (fsal && Kept && K == plan::first) {
                 kick(wv, pv, *cached, h);  // a(t, x), kept from the last step's last kick
@@ -278,7 +278,7 @@ private:
 
     // to = from + h acc, component by component (from may be to).
     ODESTEP_INLINE static void kick(State& to, const State& from, const State& acc, T h) noexcept {
-        ODESTEP_UNROLL
+        ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) to[n] = from[n] + h * acc[n];
     }
 

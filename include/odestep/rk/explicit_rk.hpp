@@ -157,13 +157,13 @@ public:
 
     /// y <- y(t + dt). On `status::non_finite` y is left as it was.
     template <class System>
-    [[nodiscard]] status step(System&& f, State& y, T t, T dt) const {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(System&& f, State& y, T t, T dt) const {
         std::array<State, S> k;  // not zeroed: every stage the step reads is written first
         State next;
         run_stages<false>(f, y, t, dt, k, next, std::make_index_sequence<S>{});
         constexpr std::size_t estimates = 0;
         T total = -T(0);  // x + (-0) is x, exactly: the compiler drops that first addition
-        ODESTEP_UNROLL
+        ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
             if constexpr (!next_from_stage<false>) next[n] = y[n] + sum<b_weights>(k, n, dt);
             if constexpr (fused_total) {
@@ -184,7 +184,7 @@ public:
     /// As above, and `error` = y_{n+1} - yhat_{n+1} from the first embedded weights (signed, per
     /// component; for the midpoint table this is the Euler-Richardson estimate h (k2 - k1)).
     template <class System>
-    [[nodiscard]] status step(System&& f, State& y, T t, T dt, State& error) const {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(System&& f, State& y, T t, T dt, State& error) const {
         static_assert(E >= 1, "odestep: this table has no embedded weights, so no error estimate");
         std::array<State, S> k;  // not zeroed: every stage the step reads is written first
         State next;
@@ -192,7 +192,7 @@ public:
         constexpr std::size_t estimates = 1;
         State err;
         T total = -T(0);
-        ODESTEP_UNROLL
+        ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
             if constexpr (!next_from_stage<true>) next[n] = y[n] + sum<b_weights>(k, n, dt);
             err[n] = sum<error_weights<0>>(k, n, dt);
@@ -216,7 +216,7 @@ public:
 
     /// As above with both estimates of a table with two embedded solutions (DOP853: 5th and 3rd order).
     template <class System>
-    [[nodiscard]] status step(System&& f, State& y, T t, T dt, State& error, State& error2) const {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(System&& f, State& y, T t, T dt, State& error, State& error2) const {
         static_assert(E >= 2, "odestep: this table has fewer than two embedded weight vectors");
         std::array<State, S> k;  // not zeroed: every stage the step reads is written first
         State next;
@@ -225,7 +225,7 @@ public:
         State err;
         State err2;
         T total = -T(0);
-        ODESTEP_UNROLL
+        ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
             if constexpr (!next_from_stage<true>) next[n] = y[n] + sum<b_weights>(k, n, dt);
             err[n] = sum<error_weights<0>>(k, n, dt);
@@ -258,7 +258,7 @@ private:
     // loop, which leaves it free to be vectorized.
     static constexpr bool fused_total = detail::optimizing_for_size;
     ODESTEP_INLINE static void add_all(T& total, const State& v) noexcept {
-        ODESTEP_UNROLL
+        ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) total += v[n];
     }
     // The unchecked stages' values (unchecked_stages) in the finiteness test of a step that returns
@@ -278,7 +278,7 @@ private:
     }
     template <std::size_t Estimates>
     ODESTEP_INLINE static void add_stages(T& total, const std::array<State, S>& k) noexcept {
-        ODESTEP_UNROLL
+        ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) add_stage_components<Estimates>(total, k, n);
     }
     template <std::size_t Estimates>
@@ -428,7 +428,7 @@ private:
             } else {
                 State input;
                 State& in = I == b_row ? next : input;  // the b row's input is y_{n+1}: kept as the new state
-                ODESTEP_UNROLL
+                ODESTEP_STEP_UNROLL
                 for (std::size_t n = 0; n < N; ++n) in[n] = y[n] + sum<a_row<I>>(k, n, dt);
                 detail::evaluate(f, t + tab.c[I] * dt, static_cast<const State&>(in), k[I]);
             }
