@@ -306,8 +306,8 @@ typedef struct odestep_event_loop_d {
     } storage;                                                              ///< not to be touched
 } odestep_event_loop_d;
 
-/// Starts a per-tick event loop: `method` steps `system` with ticks of dt from t0, watching `events[0 ..
-/// count-1]` (copied into the loop; count 1 to ODESTEP_C_MAX_EVENTS; events located at the same time fire
+/// Starts a per-tick event loop: `method` steps `system` with ticks of dt from t0, watching `events[0]` to
+/// `events[count - 1]` (copied into the loop; count 1 to ODESTEP_C_MAX_EVENTS; events located at the same time fire
 /// in array order), with `limits` (null: the defaults). Reads every g at (t0, y): an event whose g is zero
 /// there does not fire at t0. ODESTEP_INVALID_SETTING for a null or out-of-range argument (a null g, a
 /// direction not one of the three), ODESTEP_INVALID_TIME / ODESTEP_INVALID_STEP for t0 / dt,
@@ -524,8 +524,8 @@ typedef struct odestep_event_loop_f {
     } storage;                                      ///< not to be touched
 } odestep_event_loop_f;
 
-/// Starts a per-tick event loop: `method` steps `system` with ticks of dt from t0, watching `events[0 ..
-/// count-1]` (copied into the loop; count 1 to ODESTEP_C_MAX_EVENTS; events located at the same time fire
+/// Starts a per-tick event loop: `method` steps `system` with ticks of dt from t0, watching `events[0]` to
+/// `events[count - 1]` (copied into the loop; count 1 to ODESTEP_C_MAX_EVENTS; events located at the same time fire
 /// in array order), with `limits` (null: the defaults). Reads every g at (t0, y): an event whose g is zero
 /// there does not fire at t0. ODESTEP_INVALID_SETTING for a null or out-of-range argument (a null g, a
 /// direction not one of the three), ODESTEP_INVALID_TIME / ODESTEP_INVALID_STEP for t0 / dt,

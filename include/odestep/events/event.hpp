@@ -53,32 +53,38 @@ inline constexpr record_action record{};
 /// Negative or non-finite tolerance, band or dead_time is rejected with status::invalid_tolerance.
 template <class State, class G, class Action = stop_action>
 struct event {
-    using state_type = State;
-    using value_type = value_type_t<State>;
+    using state_type = State;                ///< the state the event watches
+    using value_type = value_type_t<State>;  ///< T
 
-    G g;
-    odestep::direction direction = odestep::direction::either;
-    Action action;  // no default initializer: a capturing lambda has no default constructor (C++20)
-    value_type tolerance = value_type(0);
-    value_type band = value_type(0);
-    value_type dead_time = value_type(0);
-    std::size_t max_firings = 0;
+    G g;                                                        ///< g(t, y) (Newtonian: g(t, x, v))
+    odestep::direction direction = odestep::direction::either;  ///< which crossings fire
+    /// terminal, record, or a callable; no default initializer: a capturing lambda has no default
+    /// constructor (C++20)
+    Action action;
+    value_type tolerance = value_type(0);  ///< the located bracket's width in time; 0: adjacent times
+    value_type band = value_type(0);       ///< re-arm only once |g| > band has been seen
+    value_type dead_time = value_type(0);  ///< the least time between two firings
+    std::size_t max_firings = 0;           ///< quiet for good after this many firings; 0: no limit
 
+    /// A copy with this tolerance.
     constexpr event with_tolerance(value_type v) const {
         event e = *this;
         e.tolerance = v;
         return e;
     }
+    /// A copy with this band.
     constexpr event with_band(value_type v) const {
         event e = *this;
         e.band = v;
         return e;
     }
+    /// A copy with this dead time.
     constexpr event with_dead_time(value_type v) const {
         event e = *this;
         e.dead_time = v;
         return e;
     }
+    /// A copy with this firing limit.
     constexpr event with_max_firings(std::size_t n) const {
         event e = *this;
         e.max_firings = n;
@@ -123,12 +129,13 @@ template <class Finder, class... Events>
 struct event_set {
     static_assert(sizeof...(Events) > 0, "odestep: an event set needs at least one event");
     using event_set_tag = void;  ///< marks an event set for the driving loops (integrate's overloads)
-    using finder = Finder;
-    static constexpr std::size_t size = sizeof...(Events);
+    using finder = Finder;       ///< the bracketing root finder (Brent by default)
+    static constexpr std::size_t size = sizeof...(Events);  ///< how many events
 
-    std::tuple<Events...> events;
-    event_limits limits{};
+    std::tuple<Events...> events;  ///< the events, in order of priority
+    event_limits limits{};         ///< the loop's limits, shared by its events
 
+    /// A copy with these limits.
     constexpr event_set with_limits(event_limits l) const {
         event_set s = *this;
         s.limits = l;
@@ -146,16 +153,16 @@ constexpr event_set<Finder, Events...> watch(Events... e) {
 /// One firing: which event (its index in the set) and when.
 template <class T>
 struct event_firing {
-    std::size_t event;
-    T t;
+    std::size_t event;  ///< the event's index in its set
+    T t;                ///< the time it fired at
 };
 
 /// What integrate with events reports. `status` is ok (t1 reached), stopped_by_event (`event` says which,
 /// `t` when), event_limit, or an error; the state is always the one at `t`.
 template <class T, std::size_t E>
 struct event_integrate_result {
-    odestep::status status;
-    T t;
+    odestep::status status;              ///< ok, stopped_by_event, event_limit or an error
+    T t;                                 ///< the time of the state
     step_count steps;                    ///< grid steps completed
     std::size_t event;                   ///< the terminal event, or no_event
     std::size_t fired;                   ///< firings in total
@@ -167,11 +174,11 @@ struct event_integrate_result {
 /// (the first Capacity of them are listed; `fired` counts them all; entries past those are not written).
 template <class T, std::size_t Capacity>
 struct tick_result {
-    odestep::status status;
-    T t;
-    std::size_t fired;
-    std::size_t event;  ///< the terminal event, or no_event
-    std::array<event_firing<T>, Capacity> firings;
+    odestep::status status;                         ///< ok, stopped_by_event, event_limit or an error
+    T t;                                            ///< the time of the state now
+    std::size_t fired;                              ///< firings inside the tick, all counted
+    std::size_t event;                              ///< the terminal event, or no_event
+    std::array<event_firing<T>, Capacity> firings;  ///< the first Capacity firings of the tick
 };
 
 }  // namespace odestep

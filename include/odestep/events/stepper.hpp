@@ -45,14 +45,16 @@ namespace odestep {
 template <class Stepper, class Set, std::size_t Capacity = 8>
 class event_stepper {
 public:
-    using stepper_type = Stepper;
-    using state_type = typename Stepper::state_type;
-    using value_type = value_type_t<state_type>;
-    using set_type = Set;
-    static constexpr std::size_t capacity = Capacity;
+    using stepper_type = Stepper;                      ///< the stepper it drives
+    using state_type = typename Stepper::state_type;   ///< the stepper's state
+    using value_type = value_type_t<state_type>;       ///< T
+    using set_type = Set;                              ///< the event set
+    static constexpr std::size_t capacity = Capacity;  ///< firings listed per tick (all are counted)
+    /// 1 for y' = f(t, y) (g(t, y)), 2 for Newton's equations (g(t, x, v)).
     static constexpr std::size_t arity =
         detail::event_arity<state_type, std::tuple_element_t<0, decltype(Set::events)>>();
 
+    /// The loop over a stepper and an event set; `start` begins it.
     constexpr event_stepper(Stepper stepper, Set events) : stepper_(stepper), set_(events) {
         detail::require_self_starting<Stepper>();
     }
