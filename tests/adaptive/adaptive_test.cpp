@@ -315,3 +315,27 @@ TEST_CASE("adaptive_substeps: events located inside an interval (a falling ball)
     // The stepper's bound gives the event loop's bound.
     CHECK(odestep::max_rhs_evals_per_step<decltype(s)>(1) >= decltype(s)::rhs_evals_per_step);
 }
+
+TEST_CASE("adaptive_substeps: the per-tick event loop (event_stepper) reports the ground inside a tick") {
+    const auto fall = [](double, const state2& y, state2& d) {
+        d[0] = y[1];
+        d[1] = -10.0;
+    };
+    const auto height = [](double, const state2& y) { return y[0]; };
+    // A bounce: the velocity reversed (and kept at 0.9 of it), the run goes on.
+    const auto bounce = [](double, state2& y) { y[1] = -0.9 * y[1]; };
+    const auto ground = odestep::make_event<state2>(height, odestep::direction::falling, bounce);
+    odestep::event_stepper loop(odestep::dormand_prince54_substeps<state2>(tol<state2>(1e-10, 1e-10)),
+                                odestep::watch(ground));
+    state2 y{5.0, 0.0};
+    REQUIRE(loop.start(0.0, 0.25, y) == status::ok);
+    double fired_at = -1.0;
+    for (int i = 0; i < 8 && fired_at < 0.0; ++i) {
+        const auto r = loop.tick(fall, y);
+        REQUIRE(r.status == status::ok);
+        if (r.fired > 0) fired_at = r.firings[0].t;
+    }
+    // From height 5 at rest under g = 10: the ground at t = 1 exactly, then moving up at 0.9 * 10.
+    CHECK(fired_at == doctest::Approx(1.0).epsilon(1e-12));
+    CHECK(y[1] > 0.0);
+}

@@ -6,7 +6,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <vector>
 
 #include "support/compare.hpp"
 #include "support/counting.hpp"
@@ -269,4 +268,42 @@ TEST_CASE("Arenstorf orbit: one period with DP 5(4) and DOP853, error and evalua
     }
     CHECK(previous_dp5 < 1e-6);  // at 1e-11
     CHECK(previous_d853 < 1e-7);
+}
+
+TEST_CASE("integrate_adaptive and integrate_times in float, at float-sized tolerances") {
+    using f2 = std::array<float, 2>;
+    odestep::adaptive_rk<odestep::tables::dormand_prince54, f2> engine(tol<f2>(1e-5, 1e-6));
+    f2 y{1.0f, 0.0f};
+    const auto r = odestep::integrate_adaptive(engine, odestep_test::harmonic{}, y, 0.0f, 6.0f);
+    REQUIRE(r.status == status::ok);
+    CHECK(std::fabs(y[0] - std::cos(6.0f)) < 1e-4f);
+    CHECK(std::fabs(y[1] + std::sin(6.0f)) < 1e-4f);
+    odestep::adaptive_rk<odestep::tables::bogacki_shampine32, f2> bs(tol<f2>(1e-5, 1e-6));
+    f2 z{1.0f, 0.0f};
+    const std::array<float, 3> times{1.0f, 2.0f, 3.0f};
+    float worst = 0.0f;
+    const auto rt = odestep::integrate_times(bs, odestep_test::harmonic{}, z, 0.0f, times, [&](float t, const f2& s) {
+        const float e = std::fabs(s[0] - std::cos(t));
+        worst = e > worst ? e : worst;
+    });
+    REQUIRE(rt.status == status::ok);
+    CHECK(worst < 1e-4f);
+}
+
+TEST_CASE("integrate_adaptive: a blow-up ends in step_too_small with the last accepted state") {
+    // y' = y^2, y(0) = 1: y = 1 / (1 - t), infinite at t = 1; the steps shrink toward the blow-up until
+    // they fall below ten ULPs of t.
+    using s1 = std::array<double, 1>;
+    odestep::adaptive_rk<odestep::tables::dormand_prince54, s1> engine(tol<s1>(1e-8, 1e-8));
+    s1 y{1.0};
+    s1 seen{};
+    const auto r = odestep::integrate_adaptive(
+        engine, [](double, const s1& v, s1& d) { d[0] = v[0] * v[0]; }, y, 0.0, 2.0,
+        [&](double, const s1& v) { seen = v; });
+    CHECK(r.status == status::step_too_small);
+    // The numerical solution blows up within the tolerance's reach of t = 1 (measured: 1 + 2.2e-10).
+    CHECK(std::fabs(r.t - 1.0) < 1e-6);
+    CHECK(odestep_test::same_bits(y, seen));
+    CHECK(y[0] > 1e8);
+    CHECK(std::isfinite(y[0]));
 }

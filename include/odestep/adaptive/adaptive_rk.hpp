@@ -226,7 +226,9 @@ public:
         if (control_.max_step > T(0) && mag > control_.max_step) mag = control_.max_step;
         const bool last = mag + mag / T(100) >= rem;
         const T h = last ? span : dir * mag;
-        if (!(detail::abs_value(h) > T(10) * std::numeric_limits<T>::epsilon() * detail::abs_value(t)))
+        // The controller's step below ten ULPs of t: the run cannot resolve it. A step to t_end is the
+        // caller's own interval, however short (an event's location re-steps to within ULPs of it).
+        if (!last && !(detail::abs_value(h) > T(10) * std::numeric_limits<T>::epsilon() * detail::abs_value(t)))
             return status::step_too_small;
         std::array<State, pair::S> k;
         k[0] = k0_;
