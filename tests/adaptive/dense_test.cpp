@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 #include "support/compare.hpp"
 #include "support/counting.hpp"
@@ -65,16 +66,16 @@ double midpoint_error(double h, double theta) {
 }
 
 template <class Method>
-double interpolant_order(double theta) {
+double interpolant_order(double theta, double h0 = 0.2) {
     std::array<double, 5> errors{};
-    for (std::size_t i = 0; i < errors.size(); ++i) errors[i] = midpoint_error<Method>(0.2 / std::pow(2.0, i), theta);
+    for (std::size_t i = 0; i < errors.size(); ++i) errors[i] = midpoint_error<Method>(h0 / std::pow(2.0, i), theta);
     MESSAGE("theta " << theta << " errors " << errors[0] << " .. " << errors[4]);
     return odestep_test::fitted_order(errors);
 }
 
 }  // namespace
 
-TEST_CASE("dense output: the interpolants' local orders, fitted (DP 5(4): 5 = order 4 + 1; Hermite: 4)") {
+TEST_CASE("dense output: the interpolants' local orders, fitted (DP 5(4): 5 = 4 + 1; DOP853: 8; Hermite: 4)") {
     // The local error of an order-q interpolant is O(h^(q+1)) (HNW I, Sec. II.6). The step's end value is of
     // order 5, so inside the step the interpolant's own error dominates.
     for (double theta : {0.3, 0.5, 0.8}) {
@@ -86,6 +87,10 @@ TEST_CASE("dense output: the interpolants' local orders, fitted (DP 5(4): 5 = or
         CHECK(hermite_ck == doctest::Approx(4.0).epsilon(0.06));
         // BS 3(2)'s own step is order 3 (local error h^4), as is the Hermite interpolant: 4 either way.
         CHECK(hermite_bs == doctest::Approx(4.0).epsilon(0.08));
+        // DOP853's extension, order 7: local error h^8 (from h = 1.6, where the errors stay above rounding).
+        const double d853 = interpolant_order<odestep::tables::dop853>(theta, 1.6);
+        MESSAGE("DOP853 " << d853);
+        CHECK(d853 == doctest::Approx(8.0).epsilon(0.08));
     }
 }
 
@@ -169,7 +174,8 @@ TEST_CASE("integrate_adaptive: bounded by max_attempts, NaN and bad arguments, t
         state2 y{1.0, 0.0};
         CHECK(odestep::integrate_adaptive(engine, f, y, 0.0, 1.0).status == status::invalid_tolerance);
         engine.set_tolerance(tol<state2>(1e-6, 1e-6));
-        CHECK(odestep::integrate_adaptive(engine, f, y, 0.0, INFINITY).status == status::invalid_time);
+        CHECK(odestep::integrate_adaptive(engine, f, y, 0.0, std::numeric_limits<double>::infinity()).status ==
+              status::invalid_time);
         CHECK(odestep::integrate_adaptive(engine, f, y, 0.0, 1.0, 0).status == status::invalid_setting);
         CHECK(calls == 0);
     }
@@ -177,7 +183,7 @@ TEST_CASE("integrate_adaptive: bounded by max_attempts, NaN and bad arguments, t
 
 TEST_CASE("integrate_times: the states at chosen times, the steps unchanged") {
     const std::array<double, 6> times{0.0, 0.37, 1.0, 2.5, 2.5001, 7.0};
-    for (int which = 0; which < 2; ++which) {
+    for (int which = 0; which < 3; ++which) {
         CAPTURE(which);
         const auto run = [&](auto engine, double allowance) {
             using E = decltype(engine);
@@ -218,6 +224,7 @@ TEST_CASE("integrate_times: the states at chosen times, the steps unchanged") {
         if (which == 0)
             run(odestep::adaptive_rk<odestep::tables::dormand_prince54, state3>(tol<state3>(1e-8, 1e-8)), 2.0);
         if (which == 1) run(odestep::adaptive_rk<odestep::tables::cash_karp54, state3>(tol<state3>(1e-8, 1e-8)), 50.0);
+        if (which == 2) run(odestep::adaptive_rk<odestep::tables::dop853, state3>(tol<state3>(1e-8, 1e-8)), 2.0);
     }
     SUBCASE("times out of order are refused before anything") {
         odestep::adaptive_rk<odestep::tables::dormand_prince54, state3> engine(tol<state3>(1e-8, 1e-8));
