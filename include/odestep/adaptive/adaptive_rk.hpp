@@ -263,6 +263,8 @@ public:
             h_ = habs * step_factor(control_, g, estimate_order, e, err_prev_, after_rejection_);
             after_rejection_ = true;
             ++rejected_;
+            // Shrunk to zero (an underflow, possible only near t = 0): never back to the first-step estimate.
+            if (!(h_ > T(0))) return status::step_too_small;
         }
         return status::ok;
     }
