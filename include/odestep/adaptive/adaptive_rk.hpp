@@ -232,7 +232,7 @@ public:
             return status::step_too_small;
         std::array<State, pair::S> k;
         k[0] = k0_;
-        State y_new;
+        State y_new{};  // written by pair::step (for FSAL in its stage loop, which GCC cannot always see)
         State err;
         State err2;
         pair::step(f, y, t, h, last ? t_end : t + h, k, y_new, err, err2);
