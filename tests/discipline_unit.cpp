@@ -114,6 +114,24 @@ T run_everything() {
     add_implicit(odestep::radau_iia5<state4<T>>{});
     add_implicit(odestep::radau_iia5<state4<T>, odestep::fixed_newton<3>>{});
     add_implicit(odestep::rodas3<state4<T>>{});
+    // and the error-controlled steppers: the step size and the kept stage live in the objects
+    auto add_adaptive = [&](auto method) {
+        using M = decltype(method);
+        state4<T> y{T(1), T(0), T(1), T(0)};
+        if (odestep::integrate(odestep::adaptive_substeps<M, state4<T>, 64>{}, oscillators{}, y, T(0), T(1), T(0.125))
+                .status == odestep::status::ok)
+            sum += y[0];
+        odestep::adaptive_rk<M, state4<T>> engine;
+        const std::array<T, 2> times{T(0.5), T(1)};
+        if (odestep::integrate_times(engine, oscillators{}, y, T(0), times, [&](T, const state4<T>& u) {
+                sum += u[0];
+            }).status == odestep::status::ok)
+            sum += y[0];
+    };
+    add_adaptive(odestep::tables::bogacki_shampine32{});
+    add_adaptive(odestep::tables::cash_karp54{});
+    add_adaptive(odestep::tables::dormand_prince54{});
+    add_adaptive(odestep::tables::dop853{});
     events_with(odestep::bisection{});
     events_with(odestep::illinois{});
     events_with(odestep::anderson_bjorck{});

@@ -2,6 +2,7 @@
 #ifndef ODESTEP_ODESTEP_HPP
 #define ODESTEP_ODESTEP_HPP
 
+#include "adaptive.hpp"
 #include "config.hpp"
 #include "events/events.hpp"
 #include "integrate.hpp"

@@ -24,7 +24,8 @@ enum class [[nodiscard]] status : unsigned char {
     non_finite_event,   ///< an event function returned NaN or Inf; the state is the last one where all were finite
     singular_matrix,    ///< an implicit method's iteration matrix is singular or not finite; rolled back
     substep_limit,      ///< an adaptive step needed more internal steps than its cap; the state is back at the
-                        ///< interval's start
+                        ///< interval's start (integrate_adaptive, integrate_times: the attempt cap was reached
+                        ///< first; the state is the last accepted one, at the returned time)
     step_too_small,     ///< an adaptive step size fell below what the time's precision resolves; rolled back
     invalid_setting,    ///< a setting other than a tolerance (a limit, a cap, a controller parameter) is out of
                         ///< its range; nothing was touched

@@ -1,0 +1,437 @@
+// odestep: error-controlled explicit Runge-Kutta stepping over the embedded pairs of the table library,
+// and the course's form of it: a stepper that looks like a fixed-step one (one grid interval per call) and
+// inside takes as many error-controlled steps as the tolerance asks for.
+#ifndef ODESTEP_ADAPTIVE_ADAPTIVE_RK_HPP
+#define ODESTEP_ADAPTIVE_ADAPTIVE_RK_HPP
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+
+#include "../detail/grid_clock.hpp"
+#include "../detail/ops.hpp"
+#include "../state.hpp"
+#include "../status.hpp"
+#include "../stepper.hpp"
+#include "../system.hpp"
+#include "../tables/butcher.hpp"
+#include "../tables/runge_kutta.hpp"
+#include "control.hpp"
+
+namespace odestep {
+
+namespace detail {
+
+/// One step of an embedded explicit pair with its stages kept: the error-controlled steppers need k_1 from
+/// outside (the last stage of the step before, for a FSAL table) and give all stages out (dense output),
+/// which explicit_rk's `step` does not. Plain loops over the constexpr table; a zero coefficient is a
+/// constant the compiler drops.
+template <class Method, class State>
+struct embedded_pair {
+    using T = value_type_t<State>;
+    static constexpr auto tab = Method::template table<T>;
+    using table_type = std::remove_const_t<decltype(tab)>;
+    static constexpr std::size_t S = table_type::stages;
+    static constexpr std::size_t E = table_type::embedded;
+    static constexpr std::size_t N = state_traits<State>::size;
+    static_assert(E >= 1,
+                  "odestep: error control needs a table with an embedded solution (a pair: BS 3(2), RKF "
+                  "4(5), Cash-Karp 5(4), DP 5(4), RKF 7(8), DOP853)");
+    static_assert(is_explicit(tab), "odestep: error-controlled stepping here takes an explicit table");
+
+    /// First same as last: the last stage is f(t + h, y_{n+1}) (its row of a is b, c = 1, b_s = 0), so it
+    /// is the next step's first stage (Dormand-Prince 5(4), Bogacki-Shampine 3(2)).
+    static constexpr bool compute_fsal() noexcept {
+        if (S < 2 || !(tab.c[S - 1] == T(1)) || !(tab.b[S - 1] == T(0))) return false;
+        for (std::size_t j = 0; j + 1 < S; ++j)
+            if (!(tab.a[S - 1][j] == tab.b[j])) return false;
+        return true;
+    }
+    static constexpr bool fsal = compute_fsal();
+
+    /// The order of the error estimate, k in err ~ C h^k: the lower order of the pair plus one; for a
+    /// table with two estimates (DOP853) Hairer's combined norm, which behaves as h^8 (HNW I, Sec. II.10).
+    static constexpr int estimate_order =
+        E >= 2 ? tab.order : (tab.order < tab.embedded_order[0] ? tab.order : tab.embedded_order[0]) + 1;
+
+    /// k[0] = f(t, y) is given. Fills k[1 .. S-1], y_new = y + h sum b_i k_i and
+    /// err = h sum (b_i - bhat_i) k_i (err2 from the second estimate, if any). t_end is t + h as the caller
+    /// has it (the interval's end, exactly): the stage with c = 1 is evaluated there.
+    template <class System>
+    static void step(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k, State& y_new, State& err,
+                     State& err2) {
+        for (std::size_t i = 1; i < S; ++i) {
+            State input;
+            for (std::size_t n = 0; n < N; ++n) {
+                T acc = T(0);
+                for (std::size_t j = 0; j < i; ++j)
+                    if (tab.a[i][j] != T(0)) acc += tab.a[i][j] * k[j][n];
+                input[n] = y[n] + h * acc;
+            }
+            const T ti = tab.c[i] == T(1) ? t_end : t + tab.c[i] * h;
+            detail::evaluate(f, ti, static_cast<const State&>(input), k[i]);
+            if (fsal && i + 1 == S) y_new = input;
+        }
+        for (std::size_t n = 0; n < N; ++n) {
+            T acc = T(0);
+            T e = T(0);
+            T e2 = T(0);
+            for (std::size_t j = 0; j < S; ++j) {
+                if (!fsal && tab.b[j] != T(0)) acc += tab.b[j] * k[j][n];
+                const T w = tab.b[j] - tab.bhat[0][j];
+                if (w != T(0)) e += w * k[j][n];
+                if constexpr (E >= 2) {
+                    const T w2 = tab.b[j] - tab.bhat[1][j];
+                    if (w2 != T(0)) e2 += w2 * k[j][n];
+                }
+            }
+            if (!fsal) y_new[n] = y[n] + h * acc;
+            err[n] = h * e;
+            err2[n] = h * e2;
+        }
+    }
+
+    /// The norm the controller sees: the scaled RMS norm of err; with two estimates (DOP853) Hairer's
+    /// combination e5^2 / sqrt(e5^2 + 0.01 e3^2) of the two norms (DOP853's ERR/DENO, HNW I, Sec. II.10).
+    static T norm(const State& err, const State& err2, const State& y, const State& y_new,
+                  const tolerances<State>& tol) noexcept {
+        const T e = scaled_error_norm(err, y, y_new, tol);
+        if constexpr (E >= 2) {
+            const T e3 = scaled_error_norm(err2, y, y_new, tol);
+            const T deno = e * e + e3 * e3 / T(100);
+            return deno > T(0) ? e * e / std::sqrt(deno) : T(0);
+        } else {
+            (void)err2;
+            return e;
+        }
+    }
+};
+
+/// An accepted step's data, as a dense-output sink receives it (no sink: nothing).
+struct no_step_sink {
+    template <class... A>
+    constexpr void operator()(const A&...) const noexcept {}
+};
+
+/// The default tolerances: 1e-6 (relative and absolute) in double and wider, 1e-4 in float.
+template <class T>
+constexpr T default_tolerance() noexcept {
+    return std::numeric_limits<T>::digits > 24 ? T(1) / T(1000000) : T(1) / T(10000);
+}
+
+}  // namespace detail
+
+/// \brief Error-controlled stepping with an embedded explicit Runge-Kutta pair (`Method` a table tag of
+/// tables/runge_kutta.hpp with embedded weights): the engine under odestep::adaptive_substeps,
+/// odestep::integrate_adaptive and odestep::integrate_times.
+///
+/// Its memory is the step size to try next (carried from call to call), the previous accepted error norm
+/// (the PI controller's), whether the last attempt was rejected, and the first stage f(t, y) of the point it
+/// stopped at (FSAL tables: the last stage of the step that ended there), reused when the next call starts
+/// from that same y (compared bit for bit, so a caller that changed y between calls is never given a stale
+/// derivative) at that time (to four ULPs: the grid's t0 + (i + 1) dt and the interval's t + dt). No heap, no static state; a copy is an independent engine.
+template <class Method, class State>
+class adaptive_rk {
+public:
+    using state_type = State;                ///< the state, std::array<T, N>
+    using value_type = value_type_t<State>;  ///< its scalar T
+    using method_type = Method;              ///< the table tag
+
+private:
+    using T = value_type;
+    using pair = detail::embedded_pair<Method, State>;
+
+public:
+    /// The order of the solution (the pair's higher order, which is propagated).
+    static constexpr int order = pair::tab.order;
+    /// Stages of one attempted step.
+    static constexpr std::size_t stages = pair::S;
+    /// The table is first-same-as-last: an accepted step costs stages - 1 evaluations.
+    static constexpr bool fsal = pair::fsal;
+    /// k in err ~ C h^k, the exponent the controller works with.
+    static constexpr int estimate_order = pair::estimate_order;
+    /// The most evaluations of f one attempt can make: its new stages, and f at its start when that point
+    /// has none kept (every attempt of a non-FSAL table after an accepted step).
+    static constexpr std::size_t rhs_evals_per_attempt = fsal ? stages - 1 : stages;
+    /// The evaluations before the first attempt from a new point, at most: f(t, y) and the first-step
+    /// estimate's one evaluation (when no step size is carried).
+    static constexpr std::size_t rhs_evals_to_start = 2;
+
+    /// Tolerances 1e-6 (float: 1e-4), default controller.
+    adaptive_rk() noexcept
+        : adaptive_rk(tolerances<State>::uniform(detail::default_tolerance<T>(), detail::default_tolerance<T>())) {}
+    /// The given tolerances and controller settings (checked by settings_status() before any use).
+    explicit adaptive_rk(const tolerances<State>& tol, const step_control<T>& control = {}) noexcept
+        : tol_(tol), control_(control) {}
+
+    /// status::invalid_tolerance, status::invalid_setting, or ok.
+    status settings_status() const noexcept {
+        const status s = tol_.check();
+        return s != status::ok ? s : control_.check();
+    }
+    /// The tolerances.
+    const tolerances<State>& tolerance() const noexcept { return tol_; }
+    /// The controller's settings.
+    const step_control<T>& control() const noexcept { return control_; }
+    /// Replaces the tolerances (checked by the next call).
+    void set_tolerance(const tolerances<State>& tol) noexcept { tol_ = tol; }
+    /// Replaces the controller's settings (checked by the next call).
+    void set_control(const step_control<T>& control) noexcept { control_ = control; }
+
+    /// |h| of the next attempt; 0 before the first (then Hairer's estimate chooses it).
+    T step_size() const noexcept { return h_; }
+    /// Sets |h| of the next attempt (0: estimate it); a negative or non-finite value is ignored.
+    void set_step_size(T h) noexcept {
+        if (detail::is_finite(h) && h >= T(0)) h_ = h;
+    }
+    /// Forgets the step size, the controller's memory and the kept stage: the next call starts afresh.
+    void restart() noexcept {
+        h_ = T(0);
+        err_prev_ = T(1) / T(10000);
+        after_rejection_ = false;
+        k0_valid_ = false;
+    }
+    /// Accepted steps since construction.
+    step_count accepted_steps() const noexcept { return accepted_; }
+    /// Rejected attempts since construction.
+    step_count rejected_steps() const noexcept { return rejected_; }
+
+    /// One attempted step from (t, y) toward t_end, never past it; the step lands exactly on t_end when
+    /// the step size would reach within 1% of it (no sliver is left). Accepted (`accepted` true): y and t
+    /// advance (t = t_end exactly when it landed), and sink(t, y, h, k, y_new) saw the step first (its start,
+    /// size, stages and end). Rejected: y and t unchanged, the step size shrunk. Failures leave y and t as
+    /// they were: non_finite (f gave NaN or Inf, or the step overflowed), step_too_small (|h| fell to ten
+    /// ULPs of t). t_end == t is accepted at once. Settings are the caller's to check first.
+    template <class System, class Sink = detail::no_step_sink>
+    status attempt(System& f, T& t, State& y, T t_end, bool& accepted, Sink&& sink = Sink{}) {
+        accepted = false;
+        const T span = t_end - t;
+        if (span == T(0)) {
+            accepted = true;
+            return status::ok;
+        }
+        const T dir = span > T(0) ? T(1) : T(-1);
+        const T rem = detail::abs_value(span);
+        status s = first_stage(f, t, y);
+        if (s != status::ok) return s;
+        T mag = h_;
+        if (!(mag > T(0))) {
+            T limit = rem;
+            if (control_.max_step > T(0) && control_.max_step < limit) limit = control_.max_step;
+            mag = detail::abs_value(initial_step(f, t, y, k0_, estimate_order - 1, tol_, limit, dir));
+            if (!(mag > T(0))) return status::non_finite;  // f at the estimate's probe was not finite
+        }
+        if (control_.max_step > T(0) && mag > control_.max_step) mag = control_.max_step;
+        const bool last = mag + mag / T(100) >= rem;
+        const T h = last ? span : dir * mag;
+        // The controller's step below ten ULPs of t: the run cannot resolve it. A step to t_end is the
+        // caller's own interval, however short (an event's location re-steps to within ULPs of it).
+        if (!last && !(detail::abs_value(h) > T(10) * std::numeric_limits<T>::epsilon() * detail::abs_value(t)))
+            return status::step_too_small;
+        std::array<State, pair::S> k;
+        k[0] = k0_;
+        State y_new{};  // written by pair::step (for FSAL in its stage loop, which GCC cannot always see)
+        State err;
+        State err2;
+        pair::step(f, y, t, h, last ? t_end : t + h, k, y_new, err, err2);
+        if (!all_stages_finite(k) || !detail::all_finite(y_new, err, err2)) return status::non_finite;
+        const T e = pair::norm(err, err2, y, y_new, tol_);
+        const pi_gains<T> g = gains_for(control_, estimate_order);
+        const T habs = detail::abs_value(h);
+        if (e <= T(1)) {
+            T next = habs * step_factor(control_, g, estimate_order, e, err_prev_, after_rejection_);
+            // A step shortened to land on t_end says nothing against the size planned: keep the larger.
+            if (last && mag > next) next = mag;
+            h_ = next;
+            err_prev_ = detail::max_value(e, T(1) / T(10000));
+            after_rejection_ = false;
+            sink(static_cast<const T&>(t), static_cast<const State&>(y), static_cast<const T&>(h),
+                 static_cast<const std::array<State, pair::S>&>(k), static_cast<const State&>(y_new));
+            const T t_new = last ? t_end : t + h;
+            if constexpr (pair::fsal) {
+                keep_first_stage(t_new, y_new, k[pair::S - 1]);
+            } else {
+                k0_valid_ = false;
+            }
+            detail::assign(y, y_new);
+            t = t_new;
+            accepted = true;
+            ++accepted_;
+        } else {
+            h_ = habs * step_factor(control_, g, estimate_order, e, err_prev_, after_rejection_);
+            after_rejection_ = true;
+            ++rejected_;
+            // Shrunk to zero (an underflow, possible only near t = 0): never back to the first-step estimate.
+            if (!(h_ > T(0))) return status::step_too_small;
+        }
+        return status::ok;
+    }
+
+    /// f(t, y) into dydt: the kept first stage when (t, y) is the point it belongs to, otherwise one
+    /// evaluation, then kept for the next attempt from there. non_finite (and nothing kept) when f gives
+    /// NaN or Inf.
+    template <class System>
+    status derivative(System& f, T t, const State& y, State& dydt) {
+        const status s = first_stage(f, t, y);
+        if (s == status::ok) detail::assign(dydt, k0_);
+        return s;
+    }
+
+private:
+    template <class System>
+    status first_stage(System& f, T t, const State& y) {
+        if (k0_valid_ && same_time(t, t0_) && detail::same_values(y, y0_)) return status::ok;
+        State k;
+        detail::evaluate(f, t, y, k);
+        if (!detail::all_finite(k)) {
+            k0_valid_ = false;
+            return status::non_finite;
+        }
+        keep_first_stage(t, y, k);
+        return status::ok;
+    }
+    // The same time to a few roundings: the grid's t0 + (i + 1) dt and the interval's end t + dt differ by
+    // about an ULP, and f there is the kept stage to that time perturbation, as any stage's t + c h is.
+    static bool same_time(T a, T b) noexcept {
+        const T d = detail::abs_value(a - b);
+        return d <= T(4) * std::numeric_limits<T>::epsilon() * (detail::abs_value(a) + detail::abs_value(b));
+    }
+    void keep_first_stage(T t, const State& y, const State& k) noexcept {
+        t0_ = t;
+        detail::assign(y0_, y);
+        detail::assign(k0_, k);
+        k0_valid_ = true;
+    }
+    static bool all_stages_finite(const std::array<State, pair::S>& k) noexcept {
+        for (const State& ki : k)
+            if (!detail::all_finite(ki)) return false;
+        return true;
+    }
+
+    tolerances<State> tol_;
+    step_control<T> control_;
+    T h_ = T(0);
+    T err_prev_ = T(1) / T(10000);
+    bool after_rejection_ = false;
+    bool k0_valid_ = false;
+    T t0_ = T(0);
+    State y0_{};
+    State k0_{};
+    step_count accepted_ = 0;
+    step_count rejected_ = 0;
+};
+
+/// \brief The course's adaptive solver: a stepper that looks like a fixed-step one.
+///
+/// `step(f, y, t, dt)` covers one interval of the caller's grid, [t, t + dt], with as many error-controlled
+/// internal steps of the pair `Method` as the tolerances ask for (odestep::adaptive_rk), the last landing
+/// exactly on t + dt; the internal step size is carried from one interval to the next (a step shortened to
+/// land on the grid does not shrink it). It publishes the stepper trait set, so it goes wherever a
+/// fixed-step stepper goes: integrate, integrate_n_steps, the event loops (an event is located by re-stepping
+/// the interval, which this stepper covers adaptively again), event_stepper.
+///
+/// At most `max_substeps()` attempts (accepted or rejected) per interval, settable up to the compile-time
+/// MaxSubsteps; past it `status::substep_limit` with y back at the interval's start (the shrunk step size
+/// is kept). NaN or Inf from f: status::non_finite, y back at the interval's start. `rhs_evals_per_step`
+/// is the worst case of one interval, MaxSubsteps attempts: a constant bound, not the typical cost.
+///
+///     odestep::adaptive_substeps<odestep::tables::cash_karp54, state> s(
+///         odestep::tolerances<state>::uniform(1e-8, 1e-8));
+///     auto r = odestep::integrate(s, f, y, 0.0, 10.0, 0.1, observer);  // observer sees t = 0, 0.1, ...
+template <class Method, class State, std::size_t MaxSubsteps = 256>
+class adaptive_substeps : public stepper_defaults<State> {
+    static_assert(MaxSubsteps >= 1, "odestep: adaptive_substeps needs room for at least one internal step");
+
+public:
+    using state_type = State;                        ///< the state, std::array<T, N>
+    using value_type = value_type_t<State>;          ///< its scalar T
+    using method_type = Method;                      ///< the table tag
+    using engine_type = adaptive_rk<Method, State>;  ///< the error-controlled engine inside
+
+private:
+    using T = value_type;
+
+public:
+    /// The order of the pair's propagated solution (what the internal steps achieve locally; over an
+    /// interval the error is the tolerance's, not dt^order).
+    static constexpr int order = engine_type::order;
+    /// Stages of one internal step.
+    static constexpr std::size_t stages = engine_type::stages;
+    /// The most evaluations one interval can cost: the start's two and MaxSubsteps attempts.
+    static constexpr std::size_t rhs_evals_per_step =
+        engine_type::rhs_evals_to_start + MaxSubsteps * engine_type::rhs_evals_per_attempt;
+    /// The compile-time cap on attempts per interval (the bound of rhs_evals_per_step).
+    static constexpr std::size_t max_substeps_bound = MaxSubsteps;
+
+    /// Tolerances 1e-6 (float: 1e-4), default controller, MaxSubsteps attempts per interval.
+    adaptive_substeps() noexcept = default;
+    /// The given tolerances, controller settings and cap (all checked before any use).
+    explicit adaptive_substeps(const tolerances<State>& tol, const step_control<T>& control = {},
+                               std::size_t max_substeps = MaxSubsteps) noexcept
+        : engine_(tol, control), max_substeps_(max_substeps) {}
+
+    /// invalid_tolerance, invalid_setting (a controller setting, or a cap outside [1, MaxSubsteps]), or ok.
+    /// The driving loops ask it before anything is observed or evaluated.
+    status settings_status() const noexcept {
+        const status s = engine_.settings_status();
+        if (s != status::ok) return s;
+        return max_substeps_ >= 1 && max_substeps_ <= MaxSubsteps ? status::ok : status::invalid_setting;
+    }
+    /// The cap on attempts per interval.
+    std::size_t max_substeps() const noexcept { return max_substeps_; }
+    /// Sets the cap on attempts per interval: status::invalid_setting (nothing changed) outside
+    /// [1, MaxSubsteps].
+    status set_max_substeps(std::size_t n) noexcept {
+        if (n < 1 || n > MaxSubsteps) return status::invalid_setting;
+        max_substeps_ = n;
+        return status::ok;
+    }
+    /// The engine: its tolerances, controller, step size and counts.
+    engine_type& engine() noexcept { return engine_; }
+    /// The engine, read only.
+    const engine_type& engine() const noexcept { return engine_; }
+
+    /// y <- y(t + dt) to the tolerances, in as many internal steps as needed. On any status but ok y is
+    /// the state it was given: invalid_tolerance / invalid_setting (bad settings), invalid_time (t or
+    /// t + dt not finite), invalid_step (dt zero or not finite), non_finite, step_too_small, substep_limit.
+    template <class System>
+    [[nodiscard]] status step(System&& f, State& y, T t, T dt) {
+        status s = settings_status();
+        if (s != status::ok) return s;
+        if (!detail::is_finite(t)) return status::invalid_time;
+        if (!detail::is_finite(dt) || dt == T(0)) return status::invalid_step;
+        const T t_end = t + dt;
+        if (!detail::is_finite(t_end)) return status::invalid_time;
+        const State start = y;
+        T tc = t;
+        for (std::size_t n = 0; n < max_substeps_; ++n) {
+            bool accepted = false;
+            s = engine_.attempt(f, tc, y, t_end, accepted);
+            if (s != status::ok) break;
+            if (accepted && tc == t_end) return status::ok;
+        }
+        if (s == status::ok) s = status::substep_limit;
+        detail::assign(y, start);
+        return s;
+    }
+
+private:
+    engine_type engine_{};
+    std::size_t max_substeps_ = MaxSubsteps;
+};
+
+/// The course's Cash-Karp 5(4) adaptive solver (its default) on State.
+template <class State>
+using cash_karp54_substeps = adaptive_substeps<tables::cash_karp54, State>;
+/// Dormand-Prince 5(4) adaptive solver on State.
+template <class State>
+using dormand_prince54_substeps = adaptive_substeps<tables::dormand_prince54, State>;
+/// DOP853 adaptive solver on State.
+template <class State>
+using dop853_substeps = adaptive_substeps<tables::dop853, State>;
+
+}  // namespace odestep
+
+#endif

@@ -1,0 +1,191 @@
+// odestep: error control for the embedded Runge-Kutta pairs: tolerances, the scaled error norm, the PI
+// step-size controller and the first-step estimate. Everything here is a pure function of its arguments or
+// a small value type; the steppers in adaptive/ hold the controller's memory.
+#ifndef ODESTEP_ADAPTIVE_CONTROL_HPP
+#define ODESTEP_ADAPTIVE_CONTROL_HPP
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "../detail/ops.hpp"
+#include "../state.hpp"
+#include "../status.hpp"
+#include "../system.hpp"
+
+namespace odestep {
+
+/// \brief Relative and absolute tolerances, one pair per component.
+///
+/// Component i of a step's error estimate is measured against
+///     sc_i = atol_i + rtol_i max(|y_i(t)|, |y_i(t + h)|)
+/// (Hairer, Norsett & Wanner, Solving ODE I, 2nd ed., Sec. II.4, eq. (4.10)). Built from two scalars (every
+/// component the same) or from two arrays.
+template <class State>
+struct tolerances {
+    using value_type = value_type_t<State>;  ///< the scalar T
+    State rtol{};                            ///< relative tolerance per component, >= 0
+    State atol{};                            ///< absolute tolerance per component, >= 0
+
+    /// Every component: rtol = r, atol = a.
+    static constexpr tolerances uniform(value_type r, value_type a) noexcept {
+        tolerances t{};
+        for (std::size_t i = 0; i < state_traits<State>::size; ++i) {
+            t.rtol[i] = r;
+            t.atol[i] = a;
+        }
+        return t;
+    }
+    /// Per component.
+    static constexpr tolerances per_component(const State& r, const State& a) noexcept { return tolerances{r, a}; }
+
+    /// status::ok, or status::invalid_tolerance when a tolerance is negative, NaN or infinite, or a
+    /// component has both zero (its error could never be measured).
+    constexpr status check() const noexcept {
+        for (std::size_t i = 0; i < state_traits<State>::size; ++i) {
+            const value_type r = rtol[i];
+            const value_type a = atol[i];
+            if (!detail::is_finite(r) || !detail::is_finite(a)) return status::invalid_tolerance;
+            if (r < value_type(0) || a < value_type(0)) return status::invalid_tolerance;
+            if (!(r > value_type(0) || a > value_type(0))) return status::invalid_tolerance;
+        }
+        return status::ok;
+    }
+};
+
+/// The scaled RMS norm of an error estimate, sqrt((1/N) sum_i (err_i / sc_i)^2) with sc_i as in
+/// odestep::tolerances (HNW I, Sec. II.4, eq. (4.11)). A step is acceptable when it is at most 1. NaN when
+/// any term is not finite. Each term is divided before it is squared, so an error far below the tolerance
+/// underflows harmlessly and one far above it overflows to Inf (rejected), never to NaN.
+template <class State>
+value_type_t<State> scaled_error_norm(const State& err, const State& y_old, const State& y_new,
+                                      const tolerances<State>& tol) noexcept {
+    using T = value_type_t<State>;
+    constexpr std::size_t N = state_traits<State>::size;
+    T sum = T(0);
+    for (std::size_t i = 0; i < N; ++i) {
+        const T sc =
+            tol.atol[i] + tol.rtol[i] * detail::max_value(detail::abs_value(y_old[i]), detail::abs_value(y_new[i]));
+        const T q = err[i] == T(0) ? T(0) : err[i] / sc;  // 0 / 0 where atol = 0 and y = 0: no error there
+        sum += q * q;
+    }
+    return std::sqrt(sum / static_cast<T>(N));
+}
+
+/// The norm of HNW I's starting-step algorithm: sqrt((1/N) sum_i (v_i / sc_i)^2) with
+/// sc_i = atol_i + rtol_i |y_i| (one state only).
+template <class State>
+value_type_t<State> scaled_norm(const State& v, const State& y, const tolerances<State>& tol) noexcept {
+    return scaled_error_norm(v, y, y, tol);
+}
+
+/// \brief The step-size controller's settings.
+///
+/// After a step with error norm err (at most 1: accepted), the next step is
+///     h_new = h * clamp(safety * err^(-alpha) * err_prev^(beta), min_factor, max_factor)
+/// the PI controller of Gustafsson (1991, "Control-theoretic techniques for stepsize selection in explicit
+/// Runge-Kutta methods", ACM TOMS 17(4), 533-554), in the form Hairer's DOPRI5 and DOP853 use ("stabilized
+/// step size control", HNW I, Sec. II.4; HNW II, Sec. IV.2), err_prev the norm of the previous accepted
+/// step. With k the order of the error estimate (the embedded order + 1), alpha = 0.7 / k and beta = 0.4 / k
+/// are the gains HNW quote from Gustafsson; beta = 0 is the classical (integral only) controller
+/// h err^(-1/k). After a rejection the step shrinks by safety * err^(-1/k) (at least min_factor) and the
+/// next accepted step may not grow (Hairer's codes do the same), so a controller cannot oscillate between
+/// rejections and large steps.
+///
+/// A zero alpha or beta means "the default for this method's k". Everything else is checked by check().
+template <class T>
+struct step_control {
+    T safety = T(9) / T(10);     ///< in (0, 1]: aim this far below the tolerance
+    T min_factor = T(1) / T(5);  ///< in (0, 1]: the most a step shrinks at once
+    T max_factor = T(5);         ///< >= 1: the most a step grows at once
+    T alpha = T(0);              ///< >= 0: the integral gain; 0 means 0.7 / k
+    T beta = T(-1);              ///< the proportional gain, >= 0; negative means 0.4 / k
+    T max_step = T(0);           ///< > 0: the largest |h|; 0 means no limit but the interval
+
+    /// status::ok or status::invalid_setting.
+    constexpr status check() const noexcept {
+        const bool finite = detail::is_finite(safety) && detail::is_finite(min_factor) &&
+                            detail::is_finite(max_factor) && detail::is_finite(alpha) && detail::is_finite(beta) &&
+                            detail::is_finite(max_step);
+        if (!finite) return status::invalid_setting;
+        if (!(safety > T(0) && safety <= T(1))) return status::invalid_setting;
+        if (!(min_factor > T(0) && min_factor <= T(1))) return status::invalid_setting;
+        if (!(max_factor >= T(1))) return status::invalid_setting;
+        if (alpha < T(0) || max_step < T(0)) return status::invalid_setting;
+        return status::ok;
+    }
+};
+
+/// The gains in use for a method whose error estimate has order k: (alpha, beta) from the settings, or the
+/// defaults 0.7 / k and 0.4 / k.
+template <class T>
+struct pi_gains {
+    T alpha;  ///< integral gain
+    T beta;   ///< proportional gain
+};
+
+/// The gains of step_control s for an error estimate of order k.
+template <class T>
+constexpr pi_gains<T> gains_for(const step_control<T>& s, int k) noexcept {
+    const T kk = static_cast<T>(k);
+    return {s.alpha > T(0) ? s.alpha : T(7) / (T(10) * kk), s.beta >= T(0) ? s.beta : T(4) / (T(10) * kk)};
+}
+
+/// The factor h_new / h after a step with error norm err (HNW's stabilized control, see step_control):
+///   accepted (err <= 1): safety err^(-alpha) err_prev^(beta), within [min_factor, max_factor], and at most
+///                        1 when the step before was rejected;
+///   rejected (err > 1):  safety err^(-1/k), within [min_factor, 1).
+/// err_prev is the previous accepted step's norm (at least 1e-4, as Hairer's codes keep it).
+template <class T>
+T step_factor(const step_control<T>& s, pi_gains<T> g, int k, T err, T err_prev, bool after_rejection) noexcept {
+    using std::pow;
+    if (err > T(1)) {
+        const T f = s.safety * pow(err, -T(1) / static_cast<T>(k));
+        return detail::max_value(s.min_factor, f < T(1) ? f : T(9) / T(10));
+    }
+    // err = 0 (a polynomial the pair integrates exactly): the largest growth.
+    if (!(err > T(0))) return after_rejection ? T(1) : s.max_factor;
+    T f = s.safety * pow(err, -g.alpha) * pow(err_prev, g.beta);
+    if (f > s.max_factor) f = s.max_factor;
+    if (after_rejection && f > T(1)) f = T(1);
+    return detail::max_value(s.min_factor, f);
+}
+
+/// The first step's size by Hairer's algorithm (HNW I, Sec. II.4, "Starting step size"; the routine HINIT
+/// of DOPRI5), for a method of order p from (t0, y0) with f0 = f(t0, y0) given; one more evaluation of f.
+///   d0 = ||y0||, d1 = ||f0||;  h0 = 0.01 d0 / d1 (1e-6 when either is below 1e-5)
+///   f1 = f(t0 + h0, y0 + h0 f0);  d2 = ||f1 - f0|| / h0
+///   h1 = (0.01 / max(d1, d2))^(1 / (p + 1))  (max(1e-6, 1e-3 h0) when max(d1, d2) <= 1e-15)
+///   h  = min(100 h0, h1, limit)
+/// with ||.|| the scaled norm (scaled_norm). `limit` > 0 bounds it (the interval, a maximum step); the
+/// result has the sign of `direction`. Returns 0 when f1 is not finite (the caller's non_finite).
+template <class State, class System>
+value_type_t<State> initial_step(System& f, value_type_t<State> t0, const State& y0, const State& f0, int p,
+                                 const tolerances<State>& tol, value_type_t<State> limit,
+                                 value_type_t<State> direction) {
+    using T = value_type_t<State>;
+    using std::pow;
+    const T d0 = scaled_norm(y0, y0, tol);
+    const T d1 = scaled_norm(f0, y0, tol);
+    T h0 = (d0 < T(1e-5f) || d1 < T(1e-5f)) ? T(1e-6f) : T(1) / T(100) * (d0 / d1);
+    if (limit > T(0) && h0 > limit) h0 = limit;
+    const T s0 = direction < T(0) ? -h0 : h0;
+    State y1 = detail::plus_scaled(y0, s0, f0);
+    State f1;
+    detail::evaluate(f, t0 + s0, static_cast<const State&>(y1), f1);
+    if (!detail::all_finite(f1)) return T(0);
+    State diff;
+    for (std::size_t i = 0; i < state_traits<State>::size; ++i) diff[i] = f1[i] - f0[i];
+    const T d2 = scaled_norm(diff, y0, tol) / h0;
+    const T dmax = detail::max_value(d1, d2);
+    const T h1 = dmax <= T(1e-15f) ? detail::max_value(T(1e-6f), h0 * T(1e-3f))
+                                   : pow(T(1) / (T(100) * dmax), T(1) / static_cast<T>(p + 1));
+    T h = h1 < T(100) * h0 ? h1 : T(100) * h0;
+    if (limit > T(0) && h > limit) h = limit;
+    return direction < T(0) ? -h : h;
+}
+
+}  // namespace odestep
+
+#endif

@@ -1,0 +1,138 @@
+// odestep: the free-running adaptive loops: integrate_adaptive (every accepted step observed) and
+// integrate_times (the state at the caller's times, from the dense output, without changing the steps).
+#ifndef ODESTEP_ADAPTIVE_INTEGRATE_ADAPTIVE_HPP
+#define ODESTEP_ADAPTIVE_INTEGRATE_ADAPTIVE_HPP
+
+#include <cstddef>
+#include <type_traits>
+
+#include "../detail/grid_clock.hpp"
+#include "../detail/ops.hpp"
+#include "../integrate.hpp"
+#include "../state.hpp"
+#include "../status.hpp"
+#include "adaptive_rk.hpp"
+#include "dense.hpp"
+
+namespace odestep {
+
+/// The default cap on attempted steps (accepted and rejected) of one free-running adaptive run.
+inline constexpr step_count default_max_attempts = 100000;
+
+namespace detail {
+template <class T>
+constexpr status check_span(T t0, T t1) noexcept {
+    if (!is_finite(t0) || !is_finite(t1) || !is_finite(t1 - t0)) return status::invalid_time;
+    return status::ok;
+}
+}  // namespace detail
+
+/// Integrates y' = f(t, y) from t0 to exactly t1 with the error-controlled steps of `engine`
+/// (odestep::adaptive_rk: its tolerances, controller, and the step size it carries), and calls
+/// observe(t, y) with the initial state and after every accepted step (Odeint's integrate_adaptive; SciPy's
+/// solve_ivp without t_eval). The result's `steps` counts the accepted steps.
+///
+/// Work is bounded: at most `max_attempts` attempted steps, hence at most
+/// adaptive_rk::rhs_evals_to_start + max_attempts * adaptive_rk::rhs_evals_per_attempt evaluations of f.
+/// Statuses, with y always the last accepted state at the returned t: invalid_tolerance / invalid_setting
+/// (settings, or max_attempts = 0) and invalid_time (t0 or t1 not finite), with nothing evaluated or observed;
+/// non_finite (f gave NaN or Inf; that step was not taken), step_too_small, substep_limit (max_attempts
+/// reached before t1).
+template <class Method, class State, class System, class Observer,
+          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>>, int> = 0>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(adaptive_rk<Method, State>& engine, System&& f,
+                                                                       State& y, detail::time_t_of<State> t0,
+                                                                       detail::time_t_of<State> t1, Observer&& observe,
+                                                                       step_count max_attempts = default_max_attempts) {
+    using T = value_type_t<State>;
+    status s = engine.settings_status();
+    if (s == status::ok && max_attempts == 0) s = status::invalid_setting;
+    if (s == status::ok) s = detail::check_span(t0, t1);
+    if (s != status::ok) return {s, t0, 0};
+    observe(t0, static_cast<const State&>(y));
+    T t = t0;
+    step_count accepted = 0;
+    for (step_count n = 0; n < max_attempts && t != t1; ++n) {
+        bool ok = false;
+        s = engine.attempt(f, t, y, t1, ok);
+        if (s != status::ok) return {s, t, accepted};
+        if (ok) {
+            ++accepted;
+            observe(t, static_cast<const State&>(y));
+        }
+    }
+    if (t != t1) return {status::substep_limit, t, accepted};
+    return {status::ok, t, accepted};
+}
+
+/// integrate_adaptive without an observer.
+template <class Method, class State, class System>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(adaptive_rk<Method, State>& engine, System&& f,
+                                                                       State& y, detail::time_t_of<State> t0,
+                                                                       detail::time_t_of<State> t1,
+                                                                       step_count max_attempts = default_max_attempts) {
+    detail::no_observer none;
+    return integrate_adaptive(engine, f, y, t0, t1, none, max_attempts);
+}
+
+/// Integrates from t0 to the last of `times` (a container of T with size() and operator[], such as
+/// std::array, in the direction of the run and never going back) with the engine's free-running steps, and
+/// calls observe(times[i], u) with the state at every times[i] (SciPy's t_eval, Odeint's integrate_times).
+/// The steps are those integrate_adaptive takes to the last time: the output times do not shorten them;
+/// the state between a step's ends comes from odestep::dense_step (Dormand-Prince 5(4)'s continuous
+/// extension of order 4, otherwise cubic Hermite), and a time at a step's end gets the step's own state.
+/// At the end y is the state at the last time. The result's `steps` counts the accepted steps.
+///
+/// Statuses as integrate_adaptive; invalid_time also when a time is not finite, lies before t0 or before the
+/// time before it (nothing evaluated or observed). With no times the call does nothing and returns ok.
+template <class Method, class State, class System, class Times, class Observer>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_times(adaptive_rk<Method, State>& engine, System&& f,
+                                                                    State& y, detail::time_t_of<State> t0,
+                                                                    const Times& times, Observer&& observe,
+                                                                    step_count max_attempts = default_max_attempts) {
+    using T = value_type_t<State>;
+    const std::size_t count = times.size();
+    status s = engine.settings_status();
+    if (s == status::ok && max_attempts == 0) s = status::invalid_setting;
+    if (s == status::ok && !detail::is_finite(t0)) s = status::invalid_time;
+    if (s != status::ok || count == 0) return {s, t0, 0};
+    const T t1 = times[count - 1];
+    if (detail::check_span(t0, t1) != status::ok) return {status::invalid_time, t0, 0};
+    const bool forward = !(t1 < t0);
+    T previous = t0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const T ti = times[i];
+        if (!detail::is_finite(ti) || (forward ? ti < previous : ti > previous)) return {status::invalid_time, t0, 0};
+        previous = ti;
+    }
+    std::size_t next = 0;
+    while (next < count && times[next] == t0) observe(times[next++], static_cast<const State&>(y));
+    dense_step<Method, State> dense;
+    State u;
+    T t = t0;
+    step_count accepted = 0;
+    for (step_count n = 0; n < max_attempts && next < count; ++n) {
+        bool ok = false;
+        s = engine.attempt(f, t, y, t1, ok, dense);
+        if (s != status::ok) return {s, t, accepted};
+        if (!ok) continue;
+        ++accepted;
+        // Every time inside the step: interpolated; a time on its end: the step's own state.
+        const auto inside = [&](T ti) { return forward ? ti < t : ti > t; };
+        if (next < count && inside(times[next])) {
+            s = dense.complete(f, engine);
+            if (s != status::ok) return {s, t, accepted};
+            for (; next < count && inside(times[next]); ++next) {
+                dense.at(times[next], u);
+                observe(times[next], static_cast<const State&>(u));
+            }
+        }
+        while (next < count && times[next] == t) observe(times[next++], static_cast<const State&>(y));
+    }
+    if (next < count) return {status::substep_limit, t, accepted};
+    return {status::ok, t, accepted};
+}
+
+}  // namespace odestep
+
+#endif
