@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The C API's RK4 step against the C++ one, in instructions per step (issue 16: "a C RK4 step on 4 states
 // costs at most 1.1x the C++ step's instructions, the function-pointer call per stage counted"). Not part of
 // scripts/bench.sh (no Boost or GSL variant); built and counted by hand, the library compiled as the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep benchmarks: per-step time by the thread's CPU clock, for the stiff cases (mode `cpu`).
 //
 // The harness's `time` measures wall time (steady_clock) over batches of whole runs. On a loaded machine a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep benchmarks: GSL odeiv2 as a benchmark variant calls it, gsl_odeiv2_step_apply directly on a
 // stepper allocated once (no driver, no evolve object, no step control). GSL is double only, takes the
 // right-hand side through a function pointer (so it is never inlined) and lives in the shared library as

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep benchmarks: the hand-written loops, the fastest a careful engineer writes without a library:
 // named coefficients, loop-invariant products such as h/2 and h/6 hoisted, every loop over the components
 // unrolled completely (BENCH_UNROLL) and the right-hand side inlined into the step (BENCH_HAND), at every

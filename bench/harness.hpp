@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep benchmarks: the driver every case shares.
 //
 // A case is one problem integrated by up to five variants (odestep, a hand-written loop, Boost.Odeint,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Installs the Debian packages the benchmarks need, only those that are missing: scripts/bench.sh's (g++,
 # valgrind, Boost, GSL; scripts/install-deps.sh test installs those too) and SUNDIALS for the ARKODE variants
 # of the stiff cases (bench/stiff_*.cpp, bench/sundials.hpp). libsundials-dev pulls in OpenMPI, PETSc, hypre

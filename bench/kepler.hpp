@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep benchmarks: the planar Kepler problem (mu = 1, eccentricity 0.5, from perihelion) that the
 // Newtonian cases share: the harness's state, the force in the three forms the variants call, and the
 // closed-form reference.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The planar Kepler problem (mu = 1, eccentricity 0.5, from perihelion), positions and velocities as two
 // std::array<double, 2>, Beeman's algorithm, fixed step. Every variant keeps a_n and a_{n-1} between steps
 // (one evaluation of the force per step) and self-starts with one velocity Verlet step: odestep in the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The planar Kepler problem (mu = 1, eccentricity 0.5, from perihelion), positions and velocities as two
 // std::array<double, 2>, Euler-Cromer (symplectic Euler, kick then drift: v += dt a(t, x), x += dt v), fixed
 // step, one evaluation of the force per step and nothing kept between steps. Odeint's symplectic_euler on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The planar Kepler problem (mu = 1, eccentricity 0.5, from perihelion), positions and velocities as two
 // std::array<double, 2>, Forest-Ruth (fourth order: four drifts and three kicks, three evaluations of the
 // force per step, nothing kept between steps), fixed step. Odeint has no Forest-Ruth: its nearest

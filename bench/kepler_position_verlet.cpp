@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The planar Kepler problem (mu = 1, eccentricity 0.5, from perihelion), positions and velocities as two
 // std::array<double, 2>, position Verlet (leapfrog, drift-kick-drift: x += dt/2 v, v += dt a(t + dt/2, x),
 // x += dt/2 v), fixed step, one evaluation of the force per step and nothing kept between steps. Odeint has

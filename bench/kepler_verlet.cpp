@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The planar Kepler problem (mu = 1, eccentricity 0.5, from perihelion), positions and velocities as two
 // std::array<double, 2>, velocity Verlet, fixed step. Every variant keeps the last acceleration between
 // steps (one evaluation of the force per step): odestep in its stepper (checked by its continuation test),

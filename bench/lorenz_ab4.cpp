@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Lorenz (3 states, double), the four-step Adams-Bashforth method, fixed step, started by three RK4 steps.
 // Every variant keeps the derivatives of the last three steps between steps (one evaluation of f per step
 // once started): odestep in its stepper (with its checks that a step continues the history: the same dt

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Lorenz (3 states, double), Adams-Bashforth-Moulton 4 in PECE mode (the AB4 predictor, the three-step Adams-
 // Moulton corrector applied once), fixed step, started by three RK4 steps.
 // Every variant keeps the derivatives of the last three steps between steps (two evaluations of f per step

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Lorenz (3 states, double), Dormand-Prince 5(4) with its error estimate, fixed step: 7 evaluations
 // (stateless: k1 is evaluated every step). The extra row odeint_fsal is Odeint's default use, which carries
 // k7 over as the next step's k1 (6 evaluations); it is shown, not used as the reference. GSL has no

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Lorenz (3 states, double), classic RK4, fixed step.
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The event loop: a pebble thrown straight up at v0 = 50 m/s against quadratic drag (terminal speed 30 m/s,
 // g = 9.8; examples/pebble.cpp), state (y, v) as std::array<double, 2>, RK4 at dt = 0.01, watched by two
 // events: the apex (v falls through 0) and the ground (y falls through 0), both `odestep::record`, so the

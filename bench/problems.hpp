@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep benchmarks: the right-hand sides. Each is written once, as a template over the scalar type and
 // over anything indexable (std::array for odestep, the hand loops and Odeint; a plain pointer for GSL), so
 // every variant of a case integrates exactly the same arithmetic.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Harmonic oscillator x'' = -x (2 states, float), classic RK4, fixed step. GSL is double only: no GSL
 // variant. The rhs is trivial, so this case measures the integrators' own overhead.
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>

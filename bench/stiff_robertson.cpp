@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Robertson's kinetics (3 states, double), stiff, from t = 1 to 41 with dt = 0.1 (400 steps): odestep's implicit
 // steppers and RODAS3 against Boost.Odeint's rosenbrock4 and implicit_euler (uBLAS) and, where SUNDIALS is
 // installed, ARKODE's DIRK steppers (bench/sundials.hpp), every one with the exact Jacobian, at the same step

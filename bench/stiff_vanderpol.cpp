@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Van der Pol with mu = 1000 (2 states, double), y1' = y2, y2' = mu (1 - y1^2) y2 - y1 from y = (2, 0): the slow
 // branch, t from 0 to 800 with dt = 1 (800 steps; the first jump is at t = 807), stiff (eigenvalue about -3000).
 // odestep's implicit steppers and RODAS3 against Boost.Odeint's rosenbrock4 and implicit_euler (uBLAS) and, where

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep benchmarks: SUNDIALS ARKODE (ARKStep, implicit part only) as a fixed-step DIRK stepper, for the stiff
 // cases. Optional: BENCH_HAVE_SUNDIALS is defined only where <arkode/arkode_arkstep.h> exists (Debian:
 // libsundials-dev, installed by bench/install-deps.sh), so the cases build without it. Link with

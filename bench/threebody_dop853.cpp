@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Planar three-body problem (12 states, double), DOP853's eighth-order step at a fixed step size.
 // Odeint has no DOP853: its nearest eighth-order method, runge_kutta_fehlberg78 (13 evaluations), stands in,
 // as does GSL's rk8pd (Prince-Dormand 8(7), 13 stages, with error estimate). Both are other methods, so they

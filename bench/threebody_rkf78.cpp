@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Planar three-body problem (12 states, double), Runge-Kutta-Fehlberg 7(8), eighth-order step, fixed step
 // size: the eighth-order method Odeint and odestep both have. GSL has none (its rk8pd is in
 // threebody_dop853).

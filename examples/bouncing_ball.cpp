@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: a ball dropped from h = 1 m at rest, g = 9.8, bouncing with restitution e = 0.7: an
 // event on the height (falling through 0) whose action reverses the velocity, v = -e v. RK4 with
 // dt = 0.01 (exact for constant gravity, so the impact times are the closed form's to rounding).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSL-1.0 */
 /* A C firmware's fixed-rate loop on odestep's C API (C99, float): every tick of a 1 kHz timer
  *   1. steps a plant model with RK4 (odestep_step_f), the way a controller runs its observer, and
  *   2. ticks an event loop (odestep_event_loop_tick_f) on a bouncing ball, whose bounces it reports.

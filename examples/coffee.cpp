@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: coffee at 85 C cooling by Newton's law, dT/dt = -r (T - Ts), r = 0.03 per minute,
 // Ts = 17 C; a serving of cream lowers it by 5 C. When should the cream go in to reach 62 C soonest?
 //   A: cream at the start (80 C), then a terminal event when T falls through 62 C (integrate);

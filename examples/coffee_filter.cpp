@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: the fall of a coffee filter (problem 3.5), with the course's measured heights (27
 // readings of a motion sensor, t = 0.2055 ... 0.8466 s, about 0.0247 s apart).
 //

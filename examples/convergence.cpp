@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The convergence diagram: every method of the library on one problem, error against step size and
 // against the evaluations of the right-hand side it cost.
 //

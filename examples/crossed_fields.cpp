@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: a charged particle in crossed E and B fields (m = q = 1): Boris against RK4, checking
 // the E x B / B^2 drift velocity and the gyroradius.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: curveballs (problem 3.13). A baseball (149 g) leaves the pitcher's hand 1.8 m above
 // the ground and 18 m from home plate, with drag and the Magnus force:
 //     a = g - C_D |v| v + C_M (omega x v),   C_D = 6e-3 /m, C_M = 4e-4, g = 9.8 m/s^2 downwards,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: motion in a magnetic dipole field (problem 3.15), an electron in the Earth's Van Allen
 // belt, B = B0 (re/r)^3 [3 (p.r) r - p] with B0 = 3.5e-5 T at the equator, p = -z (the field points north
 // at the equator), relativistic mass (gamma) included.

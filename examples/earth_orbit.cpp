@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: the Earth around the Sun in astronomical units and years, GM = 4 pi^2 AU^3/yr^2,
 // r0 = 1 AU, v0 = 2 pi AU/yr (a circular orbit), for 10 years with Euler, Euler-Cromer and velocity
 // Verlet at dt = 0.01 and 0.001 yr. Prints the largest and the final relative energy error and the final

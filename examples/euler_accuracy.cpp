@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: the accuracy and the stability of Euler's method (problems 3.16 and 3.17).
 //
 // Accuracy: dy/dx = 2x, y(0) = 0 (exact y = x^2), Euler with dx = 0.1, 0.05, 0.025, 0.01 and 0.005; the

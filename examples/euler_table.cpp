@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: Euler's method on dy/dx = -x y, y(0) = 1, h = 0.5 from x = 0 to 3, tabulated against
 // the exact solution y = exp(-x^2 / 2).
 #include <odestep/odestep.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // A firmware-style fixed-rate loop: every tick of a 1 kHz timer steps a small plant model with odestep::rk4
 // in float, the way a controller or an observer runs its model on a Cortex-M.
 //

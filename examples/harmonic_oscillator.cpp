@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: the simple harmonic oscillator (k = m = 1) after 10 periods with Euler,
 // Euler-Richardson (the explicit midpoint method) and RK4, at dt = 0.1 and 0.01. Prints the state, the
 // amplitude and the energy relative to the start. Euler's energy grows exactly as (1 + dt^2) per step.

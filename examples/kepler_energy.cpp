@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Energy over 10^6 steps: the Kepler orbit of eccentricity 0.5 (GM = 1, semi-major axis 1, period 2 pi)
 // from perihelion, 200 steps per period for 5000 periods, with RK4 (not symplectic: its energy error
 // grows in proportion to time) and three symplectic methods, velocity Verlet, position Verlet and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: a planet in a circular orbit, GM = 1, from x = (4, 0) with v = (0, 1/2) (circular:
 // v^2 = GM / r), integrated with velocity Verlet. Counts the turning points of x(t) (where v_x changes
 // sign, two per orbit) over 10 1/4 orbits, and estimates the period from the times of the turning points.

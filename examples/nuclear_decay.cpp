@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: multiple nuclear decays (problem 3.12), a chain A -> B -> C with RK4 against Bateman's
 // closed form.
 //

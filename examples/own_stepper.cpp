@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Writing your own stepper: a class that publishes odestep's trait set (stepper_defaults gives the usual
 // values) and a step(f, y, t, dt), driven by integrate and by the event loop like the library's own.
 #include <odestep/odestep.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: a pebble thrown straight up at v0 = 50 m/s against quadratic drag,
 // a = -g - (g / vt^2) v |v| (terminal speed vt = 30 m/s, g = 9.8), with RK4 at three step sizes and two
 // events: the apex (v falls through 0; an action notes t and y) and the ground (y falls through 0;

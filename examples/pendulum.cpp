@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: the pendulum theta'' = -(g/L) sin theta, g/L = 1, dt = 0.1, for 50 periods from
 // theta0 = pi/4 at rest: relative energy error with RK2 (the midpoint method), RK4, velocity Verlet and
 // Forest-Ruth; and from theta0 = pi/40, the largest deviation from the small-angle solution theta0 cos t.

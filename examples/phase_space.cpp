@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: phase space (problem 3.3). The trajectory of an oscillator in the (x, v) plane.
 //
 // Part 1, the simple harmonic oscillator x'' = -x from x = 1, v = 0 with dt = 0.1 for 3 periods: the exact

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: a position-dependent force (problem 3.4). A particle dropped from rest at height h falls
 // under Newton's gravity, a = -g / (1 + y/R)^2 (g = 9.8 m/s^2 at the surface, R = 6.37e6 m), instead of
 // the constant g. Velocity Verlet (a force of position alone) with a terminal ground event gives the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: a projectile launched at 30 m/s from h = 2 m against quadratic drag,
 // a = -g ez - (C2/m) |v| v with C2/m = 0.1 per metre, g = 9.8. A terminal ground event (y falls through 0)
 // ends each flight and gives the range; a golden-section search over the launch angle finds the longest.

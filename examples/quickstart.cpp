@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // examples/quickstart.cpp: a harmonic oscillator integrated with RK4 for ten time units.
 #include <odestep/odestep.hpp>
 

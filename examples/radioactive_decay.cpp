@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: radioactive decay dN/dt = -lambda N, lambda = 1, dt = 0.01, with Euler and RK4;
 // N(t)/N0 at t = 1 and t = 2 against exp(-t).
 #include <odestep/odestep.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: the trajectory of a steel ball (problem 3.7) and two falling objects (problem 3.8).
 // Gravity g = 9.8 m/s^2, quadratic drag a = -(C2/m) |v| v or linear drag a = -(C1/m) v; a terminal
 // ground event ends each flight. The forces depend on v: Euler-Richardson for Newton's equations with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Course material: stiff problems. The course's solver table recommends Radau 5 "for stiff equations", and
 // its text shows why backward Euler is stable where Euler is not. Two models:
 //

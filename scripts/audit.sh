@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Firmware-discipline audit of odestep with arm-none-eabi-g++ (writes build/audit/, prints a markdown report):
 #
 #  1. examples/firmware_loop.cpp (and, 1b, examples/c_firmware.c on the C API), linked with the bare board (toolchains/board/, no C library I/O) for

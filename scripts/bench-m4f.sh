@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Instructions per step on the emulated Cortex-M4F: bench/m4f/rk4_float4.cpp (float RK4, 4 states: odestep
 # against the unrolled hand loops of bench/hand.hpp, plain and checked) built with arm-none-eabi-g++ at -O2
 # and -Os and run under QEMU mps2-an386 with -icount shift=0 (1 ns of virtual time per instruction; the

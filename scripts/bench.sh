@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # odestep's benchmarks (bench/): each case is one problem stepped by odestep, by a hand-written loop, by
 # Boost.Odeint and by GSL odeiv2 (where they have the method; neither has event location, so the event
 # loop's case, pebble_events, has no variant of theirs), measured at -O2, -O3 and -Os as

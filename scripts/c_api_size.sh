@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Flash of the C API (odestep::odestep_c) per use, on Cortex-M4F (and M0+), at -Os and -O2: a bare image
 # (toolchains/board/, allocator wrapped away) whose main calls one part of the API, minus the same image
 # whose main calls nothing of it. Also checks that the float images hold no __aeabi_d* routine.

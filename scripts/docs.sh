@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Generates the API reference from the public headers with Doxygen (docs/Doxyfile) into build/docs/html
 # ($ODESTEP_DOCS_OUT), and fails if Doxygen warns: an undocumented public name, a broken doc command.
 set -euo pipefail

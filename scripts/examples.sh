@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Installs what is missing, builds the examples and runs them; each run's numbers are then checked
 # against closed forms by the example's checker (examples/check/*.awk). The examples write CSV files into
 # build/examples/examples/data, which scripts/plots.sh turns into the gallery's pictures (docs/gallery/).

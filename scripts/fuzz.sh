@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Builds odestep's fuzz targets (tests/fuzz/*.cpp: clang's libFuzzer with AddressSanitizer and
 # UndefinedBehaviorSanitizer) in their own build directory, build/fuzz/, and runs them. Each target checks the
 # README's promises as properties and aborts on a broken one (docs/hardening.md lists them).

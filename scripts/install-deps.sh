@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Installs the Debian packages a task needs, only those that are missing. Usage:
 #   scripts/install-deps.sh examples   # compiler, CMake, gnuplot (the gallery's pictures)
 #   scripts/install-deps.sh test       # + clang (and its libFuzzer and sanitizer runtimes, for scripts/fuzz.sh), doxygen, doctest,

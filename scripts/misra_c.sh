@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # cppcheck's MISRA C:2012 addon over the C API's header, the C firmware example and the C tests
 # (docs/c_api.md lists the findings that remain, each a justified deviation). Prints the findings per file
 # and rule; exits non-zero if a rule outside the documented deviations appears, or cppcheck reports an error.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Turns the examples' CSV files into the pictures of the gallery (docs/gallery.md): one gnuplot script per
 # picture in scripts/plots/, each PNG written to docs/gallery/ and checked to be a non-empty PNG file.
 #   scripts/plots.sh [CSV directory [PNG directory]]

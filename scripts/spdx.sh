@@ -21,8 +21,8 @@ if [ "${1:-}" = --check ]; then
 fi
 for f in "${missing[@]}"; do
   case "$f" in
-    *.hpp | *.cpp | *.h | *.c) comment="// $line" ;;
-    *.ld) comment="/* $line */" ;;
+    *.hpp | *.cpp) comment="// $line" ;;
+    *.h | *.c | *.ld) comment="/* $line */" ;;  # C: also valid C90, and MISRA's comment style
     *) comment="# $line" ;;
   esac
   mode=$(stat -c %a "$f")

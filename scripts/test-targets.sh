@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Builds odestep's test images for the Cortex-M cores and runs them under QEMU (semihosting):
 #   Cortex-M3 (mps2-an385), M4F (mps2-an386), M7 (mps2-an500), M33 (mps2-an505), M55 (mps3-an547): build + run
 #   Cortex-M0+: build and size only (QEMU has no Cortex-M0+ board)

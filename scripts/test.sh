@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Installs what is missing, then runs every test: the host suite under g++ and clang++, C++17 and C++20,
 # and ASan+UBSan (each preset builds the tests, the examples and their checks), the suite on emulated
 # Cortex-M cores, the firmware audit, and the benchmark's quick instruction-count check.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep C API: the functions that do not depend on the precision.
 #include "odestep/odestep.h"
 #include "odestep/status.hpp"

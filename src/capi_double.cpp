@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep C API, double: the methods and the functions of include/odestep/odestep.h with the suffix _d.
 #include "capi_impl.hpp"
 

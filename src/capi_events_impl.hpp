@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep C API: the per-tick event loop (odestep_event_loop_*), over odestep::event_stepper. Written once
 // for float and double; capi_events_float.cpp and capi_events_double.cpp instantiate it. Kept apart from
 // the steppers so that a firmware that does not use events links none of the event code even without

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep C API: the adapters from the C structs (include/odestep/odestep.h) to the C++ templates, written
 // once for float and double; capi_float.cpp and capi_double.cpp instantiate them under the C names.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // No library call allocates: every stepper, float/double/long double, the loops, the bad-input and
 // non-finite paths, all under the replaced global allocator.
 #include <doctest/doctest.h>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Fails when the object file holds any symbol in a writable data section (.data, .bss and their
 # per-symbol variants): the library must keep no mutable static state. Run with -DOBJECT=... -DOBJDUMP=...
 execute_process(COMMAND ${OBJDUMP} -t -C ${OBJECT} OUTPUT_VARIABLE table RESULT_VARIABLE rc)

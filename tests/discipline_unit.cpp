@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Compiled with -fno-exceptions -fno-rtti and inspected for mutable static storage (.data/.bss) by
 // check_static_state.cmake: every stepper instantiated in float, double and long double.
 #include <odestep/odestep.hpp>

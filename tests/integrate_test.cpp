@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The fixed-step loops: landing on t1, time from a counter, direction, observers, and every bad input.
 #include <doctest/doctest.h>
 #include <odestep/odestep.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The one error channel.
 #include <doctest/doctest.h>
 #include <odestep/status.hpp>

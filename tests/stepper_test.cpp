@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The stepper concept: every stepper of the library publishes the one trait set, and a user's own stepper
 // that does runs under every driving loop.
 #include <doctest/doctest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // How a right-hand side is called: both signatures, any callable, detected at compile time.
 #include <doctest/doctest.h>
 #include <odestep/odestep.hpp>

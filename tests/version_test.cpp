@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // version.hpp says the same version as CMakeLists.txt's project(VERSION), which the build passes in.
 #include <doctest/doctest.h>
 #include <odestep/version.hpp>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Common CMake toolchain file for odestep's bare-metal Cortex-M builds (arm-none-eabi-gcc + newlib).
 #
 # Do not pass this file directly: pass one of the per-core files beside it (cortex-m4f.cmake, ...), which set

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Cortex-M33 (Armv8-M Mainline, single-precision FPU: double in software), emulated by QEMU's mps2-an505.
 # The image runs in the Secure state the core resets into.
 set(ODESTEP_TARGET_CPU_FLAGS "-mcpu=cortex-m33 -mthumb -mfpu=fpv5-sp-d16 -mfloat-abi=hard")

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Instructions per step on the emulated Cortex-M4F (scripts/bench-m4f.sh builds and runs it): QEMU mps2-an386 with
 // -icount shift=0 advances the virtual clock 1 ns per instruction, and the board's CMSDK APB timer 0 counts at
 // 25 MHz, so one tick is 40 instructions. Each variant runs 100000 steps between two timer reads; the empty

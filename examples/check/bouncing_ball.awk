@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks bouncing_ball's output against the closed forms of the bouncing ball (any mechanics text; derived
 # here): falling from h at rest the ball lands at t_1 = sqrt(2 h / g) with speed v_1 = sqrt(2 g h); it leaves
 # impact k with speed e^k v_1 and flies 2 e^k v_1 / g, so t_{k+1} = t_k + 2 e^k v_1 / g. Summing the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks coffee's output. Newton's law of cooling dT/dt = -r (T - Ts) has T - Ts = (T0 - Ts) exp(-r t), so T
 # falls from T0 to T1 in ln((T0 - Ts) / (T1 - Ts)) / r:
 #   A: 80 C to 62 C: ln(63 / 45) / r;   B: 85 C to 67 C: ln(68 / 50) / r, then the cream makes it 62 C.

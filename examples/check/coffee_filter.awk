@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks coffee_filter against closed forms and sums computed here, independently of odestep.
 # - The readings it prints are the course's Table 3.2 (27 of them); from them this script recomputes the
 #   least-squares slope of the last ten, and the central differences v and a at every inner reading.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks convergence: every method's observed order and its cost, independently of odestep.
 # - The exact position after 1.25 periods of the e = 0.5 Kepler orbit (GM = a = 1) from perihelion is
 #   recomputed here from Kepler's equation (mean anomaly pi/2 = E - e sin E, by Newton's method): x =

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks crossed_fields' output against closed forms computed here, independently of odestep.
 #
 # Physics (m = q = 1, E = e y-hat, B = b z-hat): the drift is E x B / B^2 = (e/b) x-hat = w, and in the frame

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks curveball by integrating every printed pitch again here, independently of odestep: RK4 on the
 # six first-order equations (x' = v, v' = g - C_D |v| v + C_M omega x v) with dt = 1e-4 s, the plate
 # crossing x = 18 m located by the secant method on the length of the last step. RK4's error there is

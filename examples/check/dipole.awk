@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks dipole against guiding-centre theory and the methods' closed forms, computed here independently of
 # odestep. Units: re, c, re/c; the dipole line of shell L is r = L cos^2(lat), |B| = sqrt(1 + 3 s^2) / r^3
 # (s = sin lat); the curvature radius of the line is Rc = L cos(lat) (1 + 3 s^2)^(3/2) / (3 (1 + s^2)).

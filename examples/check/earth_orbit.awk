@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks earth_orbit against what the mechanics says, independently of odestep:
 # - angular momentum: Euler-Cromer (x1 x v1 = x x (v + a dt) = L, as x x a = 0 for a central force) and
 #   velocity Verlet conserve it exactly, so |dL/L0| is round-off only (< 1e-12 over 10^4 steps); Euler

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks euler_accuracy against closed forms computed here, independently of odestep.
 # - y' = 2x from y(0) = 0: Euler's sum is y_n = sum_{k<n} 2 k dx dx = x^2 - x dx at x = n dx, so the
 #   difference from x^2 is exactly x dx (order one): at x = 1 it is dx, and the relative error at x is

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks euler_table's output: Euler on y' = -x y gives y_{k+1} = y_k (1 - x_k h) exactly, x_k = k h,
 # against the printed y and the errors against exp(-x^2/2).
 function abs(v) { return v < 0 ? -v : v }

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks harmonic_oscillator's output against closed forms computed here, independently of odestep.
 # On x' = v, v' = -x the complex w = x - i v obeys w' = i w, so a Runge-Kutta step multiplies w by the
 # method's stability function R(i h): Euler 1 + ih, midpoint 1 + ih - h^2/2, RK4 1 + ih - h^2/2 - ih^3/6

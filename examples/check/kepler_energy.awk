@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks kepler_energy against what each class of method must do (independently of odestep):
 # - Symplectic splittings (velocity Verlet, position Verlet, Forest-Ruth) keep a modified energy
 #   H + O(dt^p) exactly, so |dE/E0| stays in a band: its largest value over the last tenth of the 10^6

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks kepler_orbits: a circular orbit of radius 4 with GM = 1 has period 2 pi 4^(3/2) = 16 pi (Kepler's
 # third law) and x(t) = 4 cos(t / 8) turns at t / 8 = k pi: 20 turning points in 10 1/4 orbits. Velocity
 # Verlet at dt = 0.01 keeps the radius to O(dt^2) and the period to O(dt^2): both within 1e-5 relative.

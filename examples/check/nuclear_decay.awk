@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks nuclear_decay against Bateman's closed form, computed here independently of odestep: from a pure
 # parent of mass 1, A = exp(-la t), B = la / (lb - la) (exp(-la t) - exp(-lb t)), C = 1 - A - B
 # (H. Bateman, Proc. Cambridge Phil. Soc. 15 (1910) 423).

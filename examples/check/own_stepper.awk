@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks examples/own_stepper.cpp against y = e^-t. Heun's global error for y' = -y is, to leading order,
 # t e^-t h^2 / 6 (its local error is h^3 y / 6), so at h = 0.01: 6.1e-6 at t = 1, and the event y = 1/2 is
 # late by (ln 2 / 6) h^2 = 1.2e-5 in t. Each must be within 1.5 times that.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks pebble's output against the closed forms of vertical motion with quadratic drag, derived here
 # (the falling half is J. R. Taylor, Classical Mechanics (2005), Sec. 2.4; the rising half the same way):
 #  - up (v > 0): dv/dt = -g (1 + v^2/vt^2) integrates to atan(v/vt) = atan(v0/vt) - g t / vt, so v = 0 at

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks pendulum against closed forms computed here:
 # - the period 4 K(sin(theta0/2)), K by the arithmetic-geometric mean;
 # - velocity Verlet keeps the modified energy H - dt^2 theta^2 / 8 (harmonic limit), so its largest relative

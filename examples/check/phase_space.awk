@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks phase_space by recomputing every trajectory here, independently of odestep, from the textbook
 # definition of each method, and the SHO against closed forms:
 # - SHO, h = 0.1, from (1, 0): Euler (x, v) -> (x + h v, v - h x) multiplies x^2 + v^2 by 1 + h^2 per step;

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks position_force against closed forms computed here, independently of odestep.
 # Energy conservation under a = -g / (1 + y/R)^2 (the potential -g R^2 / (R + y)) gives the impact speed
 # from rest at h: v^2 = 2 g R h / (R + h), against 2 g h for constant g; so v / sqrt(2 g h) =

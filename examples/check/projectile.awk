@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks projectile's output.
 #  - Without drag, from the ground: x = v0 cos(a) t, y = v0 sin(a) t - g t^2 / 2 is back at 0 at
 #    t = 2 v0 sin(a) / g, so the range is v0^2 sin(2a) / g, v0^2 / g at 45 degrees. RK4 is exact for a

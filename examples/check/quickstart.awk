@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks the README example: RK4 at dt = 0.01 reaches cos(10) and -sin(10) to 1e-8.
 function near(got, want, tol) { return (got - want) <= tol && (want - got) <= tol }
 BEGIN { bad = 0; seen = 0 }

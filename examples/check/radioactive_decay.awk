@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks radioactive_decay's output: Euler multiplies N by (1 - h) per step and RK4 by
 # 1 - h + h^2/2 - h^3/6 + h^4/24 (the Taylor polynomial of exp(-h)); t/h = 100 or 200 steps of h = 0.01.
 # Both must also be close to the exact exp(-t): Euler to O(h), RK4 to O(h^4).

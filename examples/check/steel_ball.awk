@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks steel_ball against closed forms and an integration of its own (RK4, dt = 1e-3 s, the ground
 # located by the secant method on the last step's length), independently of odestep.
 # - No drag (3.7a, b): the range from height h at angle a is (v0 cos a / g) (v0 sin a + sqrt(v0^2 sin^2 a +

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Checks the stiff example against closed forms computed here, independently of odestep.
 # (a) RC discharge: a one-step method applied to V' = lambda V multiplies V by its stability function R(z),
 #     z = lambda h = -h/RC, every step, so V(t_n) = R(z)^n exactly up to rounding (allowed: relative 1e-10).

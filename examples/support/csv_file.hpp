@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The examples' CSV files. Each example writes its data into the directory named by its first
 // command-line argument, or else into ODESTEP_EXAMPLE_DATA_DIR, which examples/CMakeLists.txt sets to
 // the build tree's examples/data: never into the source tree.

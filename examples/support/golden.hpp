@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Golden-section search for the examples that look for a best launch angle or a best fit.
 #ifndef ODESTEP_EXAMPLES_GOLDEN_HPP
 #define ODESTEP_EXAMPLES_GOLDEN_HPP

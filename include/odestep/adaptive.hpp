@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: error-controlled stepping: the controller (adaptive/control.hpp), the engine and the course's
 // adaptive stepper (adaptive/adaptive_rk.hpp), dense output (adaptive/dense.hpp) and the free-running loops
 // (adaptive/integrate_adaptive.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: build configuration, the one place for the library's macros.
 #ifndef ODESTEP_CONFIG_HPP
 #define ODESTEP_CONFIG_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the fixed-step driving loops, all on one grid clock (detail/grid_clock.hpp).
 #ifndef ODESTEP_INTEGRATE_HPP
 #define ODESTEP_INTEGRATE_HPP

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSL-1.0 */
 /* odestep: the C API (C99), for firmware written in C. Implemented over the C++ templates by the static
  * library odestep::odestep_c (src/); see docs/c_api.md. */
 #ifndef ODESTEP_ODESTEP_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the umbrella header, everything but the host-only utilities.
 #ifndef ODESTEP_ODESTEP_HPP
 #define ODESTEP_ODESTEP_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the state type, std::array<T, N> with T float, double or long double.
 #ifndef ODESTEP_STATE_HPP
 #define ODESTEP_STATE_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the one error channel.
 #ifndef ODESTEP_STATUS_HPP
 #define ODESTEP_STATUS_HPP

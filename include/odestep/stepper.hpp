@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: what a stepper is. Every stepper of the library, and any stepper a user writes, publishes one
 // set of traits and one `step` form per kind of system; the driving loops accept exactly those.
 #ifndef ODESTEP_STEPPER_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the forms of system a stepper takes, and how each is called. Every accepted signature is
 // detected at compile time, so the choice costs nothing at run time.
 #ifndef ODESTEP_SYSTEM_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the library's version, kept equal to project(VERSION) in CMakeLists.txt by a test.
 #ifndef ODESTEP_VERSION_HPP
 #define ODESTEP_VERSION_HPP

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # The bouncing ball (bouncing_ball, run (b): restitution 0.7, RK4 dt = 0.01 s, the floor as an event).
 load "scripts/plots/common.gp"
 set terminal pngcairo size 1000,550 font "DejaVu Sans,12"

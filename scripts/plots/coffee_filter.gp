@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # The coffee filter (coffee_filter): the course's readings and the two drag laws fitted to them.
 load "scripts/plots/common.gp"
 set terminal pngcairo size 1400,600 font "DejaVu Sans,12"

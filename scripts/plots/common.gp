@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Settings every picture shares; each script loads it, then sets its own size and plots.
 # `data` (the CSV directory) and `out` (the PNG directory) come from scripts/plots.sh.
 set datafile separator ","

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # The convergence diagram (convergence): every method on the e = 0.5 Kepler orbit over 1.25 periods.
 load "scripts/plots/common.gp"
 set terminal pngcairo size 1800,1150 font "DejaVu Sans,12"

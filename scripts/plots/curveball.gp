@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Curveballs (curveball): side view and top view of each pitch to the plate at x = 18 m.
 load "scripts/plots/common.gp"
 set terminal pngcairo size 1100,900 font "DejaVu Sans,12"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # The 10 MeV electron's magnetic moment and |u| (dipole): Boris against RK4 at the same step.
 load "scripts/plots/common.gp"
 set terminal pngcairo size 1000,700 font "DejaVu Sans,12"

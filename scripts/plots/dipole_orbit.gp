@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # The electron in the dipole field (dipole, 1 GeV, relativistic Boris): one drift round the Earth.
 load "scripts/plots/common.gp"
 set terminal pngcairo size 1400,720 font "DejaVu Sans,12"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Euler's stability on the capacitor discharge (euler_accuracy, problem 3.17): RC = 2 ms, Q(0) = 10.
 load "scripts/plots/common.gp"
 set terminal pngcairo size 1000,600 font "DejaVu Sans,12"

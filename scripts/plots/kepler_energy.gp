@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Kepler energy over 10^6 steps (kepler_energy): e = 0.5, 200 steps per period, 5000 periods.
 load "scripts/plots/common.gp"
 set terminal pngcairo size 1000,650 font "DejaVu Sans,12"

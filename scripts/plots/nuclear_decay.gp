@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Multiple nuclear decays (nuclear_decay): 76Kr -> 76Br -> 76Se, RK4 against Bateman's closed form.
 load "scripts/plots/common.gp"
 set terminal pngcairo size 1000,600 font "DejaVu Sans,12"

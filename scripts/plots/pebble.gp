@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # The pebble thrown up at 50 m/s against quadratic drag (pebble, RK4 dt = 0.01 s, apex and ground events).
 load "scripts/plots/common.gp"
 set terminal pngcairo size 1000,700 font "DejaVu Sans,12"

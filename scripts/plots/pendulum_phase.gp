@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # The pendulum's phase portrait, one panel per method (phase_space: dt = 0.15, 167 steps, five starts).
 load "scripts/plots/common.gp"
 set terminal pngcairo size 1500,950 font "DejaVu Sans,12"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # The harmonic oscillator's phase space (phase_space, problem 3.3): dt = 0.1, 188 steps (3 periods).
 load "scripts/plots/common.gp"
 set terminal pngcairo size 900,800 font "DejaVu Sans,12"

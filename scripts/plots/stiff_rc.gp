@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Stiffness on the RC discharge (stiff, part a): RC = 2 ms, V(0) = 1 V, every method at h = 2.5 RC.
 load "scripts/plots/common.gp"
 set terminal pngcairo size 1000,600 font "DejaVu Sans,12"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Robertson's kinetics (stiff, part b): Radau IIA, 20 fixed steps per decade of t, to t = 40.
 load "scripts/plots/common.gp"
 set terminal pngcairo size 1000,600 font "DejaVu Sans,12"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Two objects from 10 m, one dropped and one thrown at 30 m/s (steel_ball, problem 3.8).
 load "scripts/plots/common.gp"
 set terminal pngcairo size 1000,600 font "DejaVu Sans,12"

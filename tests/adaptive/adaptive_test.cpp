@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Error control (adaptive/control.hpp) and the course's adaptive stepper (adaptive/adaptive_rk.hpp): the norm
 // and controller against hand computations, closed-form solutions to the tolerance, counted evaluations,
 // rejection at a sharp change, the substep cap and NaN with their roll-backs, the driving loops and events.

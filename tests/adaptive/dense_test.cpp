@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The free-running adaptive loop (integrate_adaptive), dense output (dense_step, hermite_cubic) and sampling
 // at chosen times (integrate_times): closed forms, the interpolants' orders fitted, the Arenstorf orbit.
 #include <doctest/doctest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The C API agrees with the C++ library: every status code has the C++ enum's value (at compile time),
 // and C runs give the C++ results bit for bit (same method, same system, same steps; the C state is padded
 // to ODESTEP_C_MAX_STATES with zeros, which changes no operation on the first n components).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # The C API's tests (included by tests/CMakeLists.txt when ODESTEP_C_API is on), on the host and, cross-
 # compiled, on the emulated Cortex-M cores:
 #   odestep_c_tests      tests/c/capi_test.c, C99 with -Wall -Wextra -Wpedantic -Werror: closed forms, bad

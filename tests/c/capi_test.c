@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSL-1.0 */
 /* The C API (include/odestep/odestep.h) tested from C99: closed forms, bad input and roll-back. Runs on the
  * host and, cross-compiled, on the emulated Cortex-M cores (printf through semihosting there). */
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSL-1.0 */
 /* A check macro for the C tests (C99): a failed check prints where and counts; main returns nonzero if any
  * failed. No test framework (doctest is C++ only). */
 #ifndef ODESTEP_TESTS_C_CHECK_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Must NOT compile, and the error must name the accepted signatures (a ctest checks the message).
 #include <odestep/odestep.hpp>
 

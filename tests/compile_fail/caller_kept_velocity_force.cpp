@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Must NOT compile: the caller-kept acceleration of velocity Verlet needs a force of position alone (with
 // a(t, x, v) the last kick's acceleration is not the next step's first). A ctest checks the one message.
 #include <odestep/odestep.hpp>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Compiles SOURCE, which must fail, with COMPILER; the diagnostics must match EXPECTED and, when ERRORS is
 # given, hold exactly that many errors (a readable diagnostic is one line, not a cascade).
 execute_process(COMMAND ${COMPILER} -std=c++17 -fsyntax-only -Werror -I${INCLUDE} ${SOURCE}

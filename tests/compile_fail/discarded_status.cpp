@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Must NOT compile with -Werror: a status is [[nodiscard]] (a ctest checks the diagnostic).
 #include <odestep/odestep.hpp>
 

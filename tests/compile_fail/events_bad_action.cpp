@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Must not compile: an event action that returns something other than nothing or odestep::event_result
 // (a bool would be ambiguous: does true mean "stop" or "go on"?).
 #include <odestep/odestep.hpp>

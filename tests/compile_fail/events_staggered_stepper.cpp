@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Must not compile: the Boris pusher keeps v half a step behind x, so a re-step to an event's time would
 // mix two times; the event loop refuses it with a readable message.
 #include <odestep/odestep.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Must NOT compile: the half-step (staggered leapfrog) algorithm has no velocity at hand for a(t, x, v).
 // A ctest checks the one message.
 #include <odestep/odestep.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Must NOT compile: a Newtonian stepper (x and v) given to the first-order loop. A ctest checks that the
 // compiler says so in one error.
 #include <odestep/odestep.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Must NOT compile: a state is a std::array<T, N>, never a std::vector (no step may allocate). A ctest checks
 // that the compiler says so in one error.
 #include <odestep/odestep.hpp>

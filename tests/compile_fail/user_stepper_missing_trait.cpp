@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Must NOT compile: a user's stepper that does not publish rhs_evals_per_step. A ctest checks that the
 // compiler names the missing trait in one error.
 #include <odestep/odestep.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The grid clock: how many steps a run over [t0, t1] takes, the length of its last step, and the time of
 // step n, in float and double. The expected counts are computed independently, in long double (exact for
 // these float and double inputs: their difference and quotient keep 64 bits), from the rule the README

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The property the event loop publishes (issue 19): every call returns within the published bound of
 // evaluations, whatever the event functions return. Right-hand-side and event-function calls are counted
 // (tests/support/counting.hpp) for each tick (max_rhs_evals_per_tick, max_g_evals_per_tick) and for whole

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Regression tests for the event loop's defects of issue 19 (and defect 5 of issue 20), one test case per
 // defect, each naming the tracker or test suite whose pattern it follows. Expected values come from closed
 // forms: y' = 1 (a clock) is exact in every Runge-Kutta method, so event times along it are the roots of g.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Events: detection at a step's end, location by re-stepping, actions, the grid kept, re-arming, limits,
 // bad input, and the published bound on work per step. Expected values come from closed forms: RK4 is exact
 // (up to rounding) for constant acceleration and for y' = 1, so event times there are known to the tolerance.

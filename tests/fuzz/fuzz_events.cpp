@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Fuzz target: the event loops through the public API only, integrate(..., watch(...)) and
 // make_event_stepper(...).start / tick / rearm, first-order (RK4, the midpoint rule, Dormand-Prince, ABM4) and
 // Newtonian (velocity Verlet, Euler-Richardson). One to three events whose functions, directions, actions

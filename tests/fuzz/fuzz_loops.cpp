@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Fuzz target: the first-order driving loops, integrate and integrate_n_steps, with every explicit Runge-Kutta
 // table and every Adams method (double; RK4, the midpoint rule and AB4 in float too), a right-hand side,
 // times and a step count drawn from the input. Each call is checked against the README's promises

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Fuzz target: the driving loops for Newton's equations, integrate and integrate_n_steps with every Newtonian
 // stepper (the classic methods, the splitting family, the Boris pushers through their fields) and a force of
 // position alone or, where the stepper takes one, of position and velocity; the force, the times, the step

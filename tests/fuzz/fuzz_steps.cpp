@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Fuzz target: the steppers' own `step` forms, called in a sequence of up to 8 steps with times, step sizes
 // and a right-hand side drawn from the input (each step continuing the last one's time, or not): every
 // explicit Runge-Kutta table (the plain step and the estimating ones), the Newtonian family (the stepper-kept

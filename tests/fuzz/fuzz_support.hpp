@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // What the fuzz targets share: reading numbers and choices from the fuzzer's input, a right-hand side whose
 // values come from the input, and the README's promises as checks that abort (a finding) when broken.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The host CSV writer (include/odestep/host/csv_observer.hpp): what it writes, that numbers read back
 // bit for bit, thinning, failures, and that its own code makes no allocation. Host only (stdio, iostreams).
 #include <doctest/doctest.h>

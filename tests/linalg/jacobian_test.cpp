@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Jacobians: the system forms that carry one (detected at compile time), and forward differences against
 // closed-form Jacobians in float and double, with their published cost.
 #include <doctest/doctest.h>

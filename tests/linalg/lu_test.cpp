@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The LU factorization with partial pivoting against closed forms, in float and double.
 #include <doctest/doctest.h>
 #include <odestep/linalg/lu.hpp>

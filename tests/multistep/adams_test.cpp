@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The Adams multistep steppers: coefficients, observed order, the self-start, the history checks
 // (step_mismatch), rollback of a non-finite step, the fixed-step loops and the evaluation counts.
 #include <doctest/doctest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The Boris pushers: exact norm conservation of the rotation, the gyro-phase and gyroradius in closed form,
 // the E x B drift, order 2, the half-step convention for v, volume preservation and time reversibility,
 // the relativistic variant, float, and NaN rollback.

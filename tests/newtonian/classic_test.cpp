@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Newton's equations with the textbook methods of newtonian.hpp: orders, energy, reversibility,
 // evaluation counts, restarts, bad input and NaN rollback.
 #include <doctest/doctest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Symplectic splitting methods: traits, the schemes written out by hand, observed order, energy and
 // angular momentum over 10^6 steps, time reversibility, the kept acceleration (first same as last),
 // float, rollback and bad input.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Velocity-dependent forces a(t, x, v) with the splitting methods and Beeman: each kick uses the velocity at
 // hand. The course integrates drag (the pebble, the coffee filter) with Euler-Cromer this way.
 #include <doctest/doctest.h>

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Builds and runs tests/package/consumer against odestep installed (find_package), added with
 # add_subdirectory, and fetched with FetchContent; in the last two, odestep's own tests must not build. Where
 # arm-none-eabi-g++ is installed, also cross-compiles tests/package/firmware_consumer for Cortex-M4F the

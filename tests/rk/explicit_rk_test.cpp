@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The explicit Runge-Kutta stepper: traits, evaluation counts, error estimates, rollback.
 #include <doctest/doctest.h>
 #include <odestep/odestep.hpp>

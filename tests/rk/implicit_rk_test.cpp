@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The implicit Runge-Kutta steppers: stability functions from their tables, observed order, closed forms
 // (RC discharge), Robertson against its published values, the statuses of every failure with the state
 // kept bit for bit, the published evaluation counts, and the driving and event loops, in float and double.

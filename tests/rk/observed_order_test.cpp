@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Every method shows its order on a problem with a closed-form solution, in double, and works in float.
 #include <doctest/doctest.h>
 #include <odestep/odestep.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // RODAS3 and the Rosenbrock stepper: the order conditions of Hairer & Wanner's Table IV.7.1, the transformed
 // coefficients against KPP's published ones, the stability function, the observed order (autonomous and not),
 // Robertson, the statuses of every failure with y kept bit for bit, and the fixed evaluation count.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Host only (long runs): stiff problems against published reference solutions (Robertson to t = 1e11, Van der
 // Pol with mu = 1000, HIRES), the order reduction on Prothero-Robinson, and the energy of a pendulum over 10^6
 // steps of the symplectic implicit methods.

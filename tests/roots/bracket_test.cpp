@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The bracketing root finders: every call strictly inside the bracket of its time, the root kept in the
 // bracket, the width reached within each method's worst-case count, zero calls when the bracket is already
 // narrow enough, the cap, a non-finite f, an exact zero, constant evaluation, and the call counts per

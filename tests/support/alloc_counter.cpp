@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Replaces the global allocation functions so a test can prove that a library call allocates nothing.
 // glibc lets a program define malloc & co. and still reach its own allocator through __libc_*. Not built
 // under AddressSanitizer, which owns these functions.

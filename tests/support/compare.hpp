@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Comparisons the tests make of whole states: bit for bit, and the largest component difference.
 #ifndef ODESTEP_TESTS_SUPPORT_COMPARE_HPP
 #define ODESTEP_TESTS_SUPPORT_COMPARE_HPP

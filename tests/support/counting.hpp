@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Right-hand sides, accelerations and fields that count their calls: the evaluation counts the steppers
 // publish (rhs_evals_per_step, ...) are checked against them.
 #ifndef ODESTEP_TESTS_SUPPORT_COUNTING_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The library's method families as type lists, for tests that run over every method of a family (with
 // for_each_type, type_list.hpp): a method added to the library is added here once, and every test that
 // iterates the family covers it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The observed order of a method: errors at step sizes h, h/2, h/4, ... and the slope of log(error) against
 // log(h), fitted by least squares over all of them, or local between neighbours.
 #ifndef ODESTEP_TESTS_SUPPORT_ORDER_FIT_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The test problems more than one test uses, each with its closed-form solution (or known states) and where
 // that comes from. Every problem is a template in the value type: float, double and long double.
 #ifndef ODESTEP_TESTS_SUPPORT_PROBLEMS_HPP

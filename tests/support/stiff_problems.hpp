@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Stiff test problems shared by the implicit and Rosenbrock tests, with their Jacobians and the published
 // reference values they are checked against.
 #ifndef ODESTEP_TESTS_STIFF_PROBLEMS_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The shared test helpers themselves: every test leans on them, so each is checked here against a closed form
 // or a case worked by hand.
 #include <doctest/doctest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Iteration over a list of types (a std::tuple of them), for tests that run over every method of a family.
 #ifndef ODESTEP_TESTS_SUPPORT_TYPE_LIST_HPP
 #define ODESTEP_TESTS_SUPPORT_TYPE_LIST_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: every table against the Runge-Kutta order conditions, one per rooted tree (Butcher 1963).
 //
 // The trees are generated, not written out: canonical level sequences (Beyer & Hedetniemi 1980, "Constant time

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Smoke test of the bare-metal harness itself (startup code, linker script, semihosting, emulator), kept
 // independent of odestep so that a harness failure is told apart from a library failure.
 

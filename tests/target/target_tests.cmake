@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # odestep's tests cross-compiled for a Cortex-M core, included by tests/CMakeLists.txt when
 # CMAKE_CROSSCOMPILING (configure with a toolchain file from toolchains/, e.g. --preset cortex-m4f).
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # The bare-metal harness an image links to run under QEMU: startup code, syscall stubs and the core's linker
 # script (ODESTEP_TARGET_LINKER_SCRIPT, set by the per-core toolchain file). Test infrastructure only.
 #

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Startup code for odestep's test and example images on QEMU's Cortex-M boards (MPS2/MPS3).
 //
 // This is test infrastructure, not something firmware using odestep needs: a real product keeps its vendor's

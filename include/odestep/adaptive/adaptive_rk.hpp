@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: error-controlled explicit Runge-Kutta stepping over the embedded pairs of the table library,
 // and the course's form of it: a stepper that looks like a fixed-step one (one grid interval per call) and
 // inside takes as many error-controlled steps as the tolerance asks for.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: error control for the embedded Runge-Kutta pairs: tolerances, the scaled error norm, the PI
 // step-size controller and the first-step estimate. Everything here is a pure function of its arguments or
 // a small value type; the steppers in adaptive/ hold the controller's memory.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: dense output: the state between the ends of an accepted step, from the step's own data.
 #ifndef ODESTEP_ADAPTIVE_DENSE_HPP
 #define ODESTEP_ADAPTIVE_DENSE_HPP

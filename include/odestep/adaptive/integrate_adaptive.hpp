@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the free-running adaptive loops: integrate_adaptive (every accepted step observed) and
 // integrate_times (the state at the caller's times, from the dense output, without changing the steps).
 #ifndef ODESTEP_ADAPTIVE_INTEGRATE_ADAPTIVE_HPP

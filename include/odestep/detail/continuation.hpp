@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: where a history-keeping stepper expects its next step.
 #ifndef ODESTEP_DETAIL_CONTINUATION_HPP
 #define ODESTEP_DETAIL_CONTINUATION_HPP

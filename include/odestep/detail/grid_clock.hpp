@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the grid clock, the one place where the times of a fixed-step run come from.
 #ifndef ODESTEP_DETAIL_GRID_CLOCK_HPP
 #define ODESTEP_DETAIL_GRID_CLOCK_HPP

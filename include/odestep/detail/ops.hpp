@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the whole-state operations every stepper is made of (finiteness, absolute value, assignment,
 // scaled sums), written once.
 #ifndef ODESTEP_DETAIL_OPS_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: arming, the crossing test and what the loop remembers of each event between evaluation points (its last
 // g, the time of its last firing and of its bracket's end, its firings, whether it is armed); the engine's
 // rearm applies the band, the dead time and max_firings to it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the work bounds of the event loop: the most right-hand-side and event-function evaluations one step or
 // one tick can cost, published as constexpr functions, and the check that refuses limits whose bounds do not fit.
 #ifndef ODESTEP_EVENTS_BOUNDS_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the event engine, one step with events as named phases: the quiet step (step and settle), the scan of the
 // step piece by piece (probes), the location of the earliest crossing by re-stepping (locate), the firing of
 // the cascade (fire_all), and the restart of the rest of the step after an action (scan's passes).

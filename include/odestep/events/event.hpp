@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the event loop's first phase, the description of an event and its settings: the direction, the action,
 // the tolerance, band, dead time and firing limit of each event, the loop's limits, the set of events of a run
 // (watch), and what a run or a tick with events reports.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: events, the moments when a function of the state crosses zero (the top of a flight, a ball
 // reaching the floor, coffee cooling to drinking temperature), located by re-stepping the integrator from the
 // start of the step, acted on, and paid for with a bounded, published amount of work per step. The loop is

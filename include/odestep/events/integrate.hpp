@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: integrate with events: the driving loop of a run over [t0, t1] (detail::run_grid, the grid clock) with
 // the event engine stepping it, first-order and Newtonian.
 #ifndef ODESTEP_EVENTS_INTEGRATE_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the per-tick event loop, event_stepper: one tick per period of a timer, on the grid clock, with the
 // per-tick contract (docs/events.md).
 #ifndef ODESTEP_EVENTS_STEPPER_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: a CSV writer for the host, usable as an observer of odestep's loops (examples, plots, logs).
 //
 // Host only: the umbrella header odestep.hpp does not include it, and firmware should not either (it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the Jacobian d f / d y an implicit method needs: the system's own (odestep::with_jacobian), or
 // forward differences of f with an increment that works in float as in double.
 #ifndef ODESTEP_LINALG_JACOBIAN_HPP

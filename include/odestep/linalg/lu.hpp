@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: small dense linear algebra for the implicit methods: the LU factorization with partial pivoting
 // of an N x N std::array matrix and the solve with it. No heap, no exceptions, constexpr.
 #ifndef ODESTEP_LINALG_LU_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: Adams-Bashforth and Adams-Bashforth-Moulton (PECE) multistep methods for y' = f(t, y).
 #ifndef ODESTEP_MULTISTEP_ADAMS_HPP
 #define ODESTEP_MULTISTEP_ADAMS_HPP

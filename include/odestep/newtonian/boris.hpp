@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the Boris pusher for a charged particle in electric and magnetic fields, non-relativistic and
 // relativistic.
 //

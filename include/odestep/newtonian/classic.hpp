@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: Newton's equations x'' = a(t, x, v) with position and velocity as two states, and the
 // textbook methods for them that are not symplectic compositions (those are in symplectic.hpp).
 #ifndef ODESTEP_NEWTONIAN_CLASSIC_HPP

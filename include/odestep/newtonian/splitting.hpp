@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: symplectic splitting (composition) methods for Newton's equations x'' = a(t, x), driven by
 // constexpr coefficient tables, and the table library.
 #ifndef ODESTEP_NEWTONIAN_SPLITTING_HPP

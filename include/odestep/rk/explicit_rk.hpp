@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the one explicit Runge-Kutta stepper, driven by any Butcher table.
 #ifndef ODESTEP_RK_EXPLICIT_RK_HPP
 #define ODESTEP_RK_EXPLICIT_RK_HPP

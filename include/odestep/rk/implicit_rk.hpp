@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the implicit Runge-Kutta stepper, driven by any implicit Butcher table, with a simplified Newton
 // iteration whose work per step is bounded and published.
 #ifndef ODESTEP_RK_IMPLICIT_RK_HPP

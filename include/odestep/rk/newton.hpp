@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the simplified Newton iteration of the implicit Runge-Kutta methods: its two policies (iterate to
 // a tolerance within a cap, or exactly k times), its tolerance and its convergence test.
 #ifndef ODESTEP_RK_NEWTON_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the Rosenbrock (linearly implicit) stepper: one Jacobian, one factorization and S linear solves per
 // step, no iteration, so every step costs the same.
 #ifndef ODESTEP_RK_ROSENBROCK_HPP

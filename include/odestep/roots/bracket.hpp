@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: bracketing root finders (bisection, Illinois, Anderson-Bjorck, Brent, ITP), used by the event
 // loop to narrow a sign change of an event function down to a time bracket.
 #ifndef ODESTEP_ROOTS_BRACKET_HPP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the Adams tables (Adams-Bashforth, and Adams-Moulton correctors): the table type and the methods.
 #ifndef ODESTEP_TABLES_ADAMS_HPP
 #define ODESTEP_TABLES_ADAMS_HPP

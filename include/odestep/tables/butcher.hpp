@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the Butcher table type and the checks every table must pass at compile time.
 #ifndef ODESTEP_TABLES_BUTCHER_HPP
 #define ODESTEP_TABLES_BUTCHER_HPP

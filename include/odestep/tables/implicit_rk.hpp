@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the implicit Runge-Kutta tables. Each method is a tag type whose `table<T>` is a constexpr
 // butcher_tableau typed in T (the same type as the explicit tables, with a full matrix a), stepped by
 // odestep::implicit_rk (rk/implicit_rk.hpp). Rational coefficients are written T(p) / T(q); the irrational

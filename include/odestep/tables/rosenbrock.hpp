@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the Rosenbrock (linearly implicit) tables, stepped by odestep::rosenbrock (rk/rosenbrock.hpp).
 #ifndef ODESTEP_TABLES_ROSENBROCK_HPP
 #define ODESTEP_TABLES_ROSENBROCK_HPP

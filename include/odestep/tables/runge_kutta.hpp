@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the table library. Each method is a tag type whose `table<T>` is a constexpr Butcher table
 // typed in T, so float code never touches a double coefficient. Coefficients are written as exact
 // rationals T(p) / T(q) where the source gives them so; decimal-only sources use long double literals.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // odestep: the splitting (composition) tables for Newton's equations: the table type, its compile-time
 // checks, and the methods.
 #ifndef ODESTEP_TABLES_SPLITTING_HPP

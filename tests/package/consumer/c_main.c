@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSL-1.0 */
 /* The C API from a consumer: y' = -y from 0 to 1 with RK4 through odestep::odestep_c; exits 0 when
  * y(1) = exp(-1) to RK4's accuracy. C99. */
 #include <math.h>

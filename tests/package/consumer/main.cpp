@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Integrates y' = -y from 0 to 1 with RK4 and exits 0 when y(1) = exp(-1) to RK4's accuracy.
 #include <odestep/odestep.hpp>
 

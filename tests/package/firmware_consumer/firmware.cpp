@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // One control tick of a float mass-spring-damper, as firmware would call it from its timer interrupt.
 #include <odestep/odestep.hpp>
 
