@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSL-1.0
 # Installs the Debian packages a task needs, only those that are missing. Usage:
 #   scripts/install-deps.sh examples   # compiler, CMake, gnuplot (the gallery's pictures)
-#   scripts/install-deps.sh test       # + clang (and its libFuzzer and sanitizer runtimes, for scripts/fuzz.sh), doxygen, doctest,
+#   scripts/install-deps.sh test       # + clang (and its libFuzzer and sanitizer runtimes, for scripts/fuzz.sh), cppcheck, doxygen, doctest,
 #                                      #   valgrind, Boost/GSL (benchmarks), Cortex-M toolchain, QEMU
 set -euo pipefail
 profile=${1:-test}
@@ -12,7 +12,7 @@ packages+=(gnuplot-nox)
 if [ "$profile" = test ]; then
   # libclang-rt-dev: clang's runtimes (libclang_rt.fuzzer, .asan, .ubsan; libclang-rt-14-dev on Debian 12), only
   # recommended by clang, so not installed with --no-install-recommends.
-  packages+=(clang libclang-rt-dev clang-format doxygen doctest-dev valgrind libboost-dev libgsl-dev binutils
+  packages+=(clang libclang-rt-dev clang-format cppcheck doxygen doctest-dev valgrind libboost-dev libgsl-dev binutils
              gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi qemu-system-arm)
 fi
 missing=()

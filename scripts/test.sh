@@ -24,6 +24,8 @@ host_preset() {
 run format scripts/format.sh --check
 run spdx scripts/spdx.sh --check
 run docs scripts/docs.sh
+# cppcheck's MISRA C:2012 addon over the C API's header, example and tests: only the documented deviations.
+run misra-c scripts/misra_c.sh
 for preset in host host-cxx20 host-clang host-clang-cxx20 host-sanitize; do
   run "$preset" host_preset "$preset"
 done
