@@ -544,6 +544,9 @@ private:
         const T sign_h = h < T(0) ? T(-1) : T(1);
         pack trial_state;
         status failure = status::ok;
+        // a starts at lo: a_state is the state there until an event's bracket moves it (so that it holds a
+        // state on every path, which arm-none-eabi-g++'s -Wmaybe-uninitialized could not see).
+        a_state = lo_state;
         for (std::size_t c = 0; c < E; ++c) {
             if (!crossed(set, c, g_b[c])) continue;
             const T side = memory[c].g > T(0) ? T(-1) : T(1);  // f = side * g is negative before the crossing
