@@ -57,6 +57,28 @@ no_alloc=(-Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=free,--wrap=alig
 forbidden='^(malloc|free|calloc|realloc|_malloc_r|_free_r|_sbrk|_sbrk_r|_Znw.*|_Zna.*|_Zdl.*|_Zda.*|__cxa_.*)$'
 
 report=$out/report.md
+# check_image NAME CORE IMAGE MACHINE CPU_FLAGS: a firmware image's sizes, no allocator or C++ run-time symbol,
+# no __aeabi_d* (float programs), and its run under QEMU where the core has a board; one row of the report.
+check_image() {
+  local name=$1 core=$2 image=$3 machine=$4 flags=$5 text data bss symbols runtime doubles run
+  read -r text data bss _ < <(arm-none-eabi-size "$image" | awk 'NR == 2')
+  symbols=$(arm-none-eabi-nm "$image" | awk '{print $NF}')
+  runtime=$(grep -E "$forbidden" <<< "$symbols" | tr '\n' ' ')
+  doubles=$(grep -E '^__aeabi_d' <<< "$symbols" | tr '\n' ' ')
+  [[ -z "$runtime" ]] || fail "$core: $name contains $runtime"
+  [[ -z "$doubles" ]] || fail "$core: the float $name contains $doubles"
+  run=-
+  if [[ -n "$machine" && $have_qemu == 1 ]]; then
+    if timeout 60 qemu-system-arm -M "$machine" -nographic -monitor none \
+         -semihosting-config enable=on,target=native -kernel "$image" > "$out/$name-$core.out" 2>&1; then
+      run="ok ($machine)"
+    else
+      run="FAILED ($machine)"
+      fail "$core: $name failed under QEMU: $(tail -1 "$out/$name-$core.out")"
+    fi
+  fi
+  echo "| $core | \`$flags\` | $text | $data | $bss | ${runtime:-none} | ${doubles:-none} | $run |" >> "$report"
+}
 {
   echo "# odestep firmware audit"
   echo
@@ -82,23 +104,7 @@ for core in cortex-m0plus cortex-m3 cortex-m4f cortex-m33; do
     echo "| $core | \`${cpu[*]}\` | - | - | - | link FAILED | - | - |" >> "$report"
     continue
   fi
-  read -r text data bss _ < <(arm-none-eabi-size "$image" | awk 'NR == 2')
-  symbols=$(arm-none-eabi-nm "$image" | awk '{print $NF}')
-  runtime=$(grep -E "$forbidden" <<< "$symbols" | tr '\n' ' ')
-  doubles=$(grep -E '^__aeabi_d' <<< "$symbols" | tr '\n' ' ')
-  [[ -z "$runtime" ]] || fail "$core: firmware_loop contains $runtime"
-  [[ -z "$doubles" ]] || fail "$core: the float firmware_loop contains $doubles"
-  run=-
-  if [[ -n "$machine" && $have_qemu == 1 ]]; then
-    if timeout 60 qemu-system-arm -M "$machine" -nographic -monitor none \
-         -semihosting-config enable=on,target=native -kernel "$image" > "$out/firmware_loop-$core.out" 2>&1; then
-      run="ok ($machine)"
-    else
-      run="FAILED ($machine)"
-      fail "$core: firmware_loop failed under QEMU: $(tail -1 "$out/firmware_loop-$core.out")"
-    fi
-  fi
-  echo "| $core | \`${cpu[*]}\` | $text | $data | $bss | ${runtime:-none} | ${doubles:-none} | $run |" >> "$report"
+  check_image firmware_loop "$core" "$image" "$machine" "${cpu[*]}"
 done
 
 # --- 1b: the C firmware example (examples/c_firmware.c on the C API, odestep::odestep_c from src/) ---
@@ -135,23 +141,7 @@ for core in cortex-m0plus cortex-m3 cortex-m4f cortex-m33; do
     echo "| $core | \`${cpu[*]}\` | - | - | - | link FAILED | - | - |" >> "$report"
     continue
   fi
-  read -r text data bss _ < <(arm-none-eabi-size "$image" | awk 'NR == 2')
-  symbols=$(arm-none-eabi-nm "$image" | awk '{print $NF}')
-  runtime=$(grep -E "$forbidden" <<< "$symbols" | tr '\n' ' ')
-  doubles=$(grep -E '^__aeabi_d' <<< "$symbols" | tr '\n' ' ')
-  [[ -z "$runtime" ]] || fail "$core: c_firmware contains $runtime"
-  [[ -z "$doubles" ]] || fail "$core: the float c_firmware contains $doubles"
-  run=-
-  if [[ -n "$machine" && $have_qemu == 1 ]]; then
-    if timeout 60 qemu-system-arm -M "$machine" -nographic -monitor none \
-         -semihosting-config enable=on,target=native -kernel "$image" > "$out/c_firmware-$core.out" 2>&1; then
-      run="ok ($machine)"
-    else
-      run="FAILED ($machine)"
-      fail "$core: c_firmware failed under QEMU: $(tail -1 "$out/c_firmware-$core.out")"
-    fi
-  fi
-  echo "| $core | \`${cpu[*]}\` | $text | $data | $bss | ${runtime:-none} | ${doubles:-none} | $run |" >> "$report"
+  check_image c_firmware "$core" "$image" "$machine" "${cpu[*]}"
 done
 
 # --- 2 and 3: one translation unit per (core, type, optimisation) with a step() wrapper per stepper ---
