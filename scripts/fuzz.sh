@@ -22,7 +22,7 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
 
-read -r -a targets <<< "${FUZZ_TARGETS:-fuzz_loops fuzz_loops_newtonian fuzz_steps fuzz_events}"
+read -r -a targets <<< "${FUZZ_TARGETS:-fuzz_loops fuzz_loops_newtonian fuzz_steps fuzz_events fuzz_adaptive}"
 quick_seconds=15
 cxx=${CXX_FUZZ:-clang++}
 dir=${FUZZ_BUILD_DIR:-$root/build/fuzz}

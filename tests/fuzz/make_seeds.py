@@ -255,7 +255,60 @@ def main():
     # 10 (found here): predictor_corrector's bad tolerance, refused after observing the initial state.
     write("fuzz_loops_newtonian", "regression-10-tolerance-before-observing",
           newtonian_loop("predictor_corrector", 0, 0.125, t1=1, settings=b(1) + num(-1)))
+    adaptive_seeds()
 
+
+# ---- fuzz_adaptive: selector, script, then for a grid entry the tolerances, controller and cap, y, t0, dt,
+# the loop; for a free-running entry the tolerances, controller, a step size, y, t0, the span or output times,
+# the cap on attempts.
+ADAPTIVE = ["bs32_substeps", "ck54_substeps", "dp54_substeps", "dp54_substeps_float", "backward_euler", "sdirk3",
+            "rodas3", "backward_euler_float", "free_dp54", "free_ck54", "free_bs32", "free_dop853",
+            "free_dp54_float"]
+
+
+def adaptive_tolerances(rtol=1e-6, atol=1e-6, number=num):
+    return b(1) + number(rtol) + number(atol)  # uniform
+
+
+def adaptive_grid(entry, t0, dt, t1=None, n=None, y=(1, 0), cap=16, f=None, number=num):
+    out = b(ADAPTIVE.index(entry)) + (f if f is not None else script(number=number))
+    if "substeps" in entry:
+        out += adaptive_tolerances(number=number) + b(0) + b(cap)  # default controller
+    out += number(y[0]) + number(y[1]) + number(t0) + number(dt)
+    if n is None:
+        return out + b(0) + b(0) + number(t1)
+    return out + b(1) + b(n)
+
+
+def adaptive_free(entry, t0, t1=None, times=None, attempts=100, y=(1, 0), f=None, number=num):
+    out = b(ADAPTIVE.index(entry)) + (f if f is not None else script(number=number))
+    out += adaptive_tolerances(number=number) + b(0) + b(0)  # default controller, no step size given
+    out += number(y[0]) + number(y[1]) + number(t0)
+    if times is None:
+        out += b(0) + b(1) + number(t1)
+    else:
+        out += b(1) + b"".join(b(1) + number(t) for t in times)
+    return out + b(attempts)
+
+
+def adaptive_seeds():
+    for entry in ADAPTIVE:
+        number = numf if entry.endswith("float") else num
+        if entry.startswith("free"):
+            write("fuzz_adaptive", "seed-" + entry, adaptive_free(entry, 0, t1=10, number=number))
+            write("fuzz_adaptive", "seed-" + entry + "-times",
+                  adaptive_free(entry, 0, times=(0, 0.5, 2.5, 10), number=number))
+        else:
+            write("fuzz_adaptive", "seed-" + entry, adaptive_grid(entry, 0, 0.5, t1=10, number=number))
+            write("fuzz_adaptive", "seed-" + entry + "-n", adaptive_grid(entry, 0, 0.5, n=20, number=number))
+    # 11 (found by fuzz_adaptive): an interval emptied by rounding (t + dt == t) returned ok with a NaN y.
+    write("fuzz_adaptive", "regression-11-empty-interval-nan",
+          adaptive_grid("dp54_substeps", 1e20, 1, n=3, y=("nan", 0)))
+    # 12 (found by fuzz_adaptive; the fuzzer's own input, regression-12-interpolant-overflow, not written here):
+    # integrate_times observed an interpolated state that overflowed between two finite step ends.
+    # 13 (found by fuzz_adaptive): a controller factor underflowing h to 0 sent the next attempt back to the
+    # first-step estimate, one evaluation over integrate_adaptive's bound (tests/adaptive/limits_test.cpp has
+    # the deterministic case).
 
 if __name__ == "__main__":
     main()

@@ -245,7 +245,10 @@ public:
             T next = habs * step_factor(control_, g, estimate_order, e, err_prev_, after_rejection_);
             // A step shortened to land on t_end says nothing against the size planned: keep the larger.
             if (last && mag > next) next = mag;
-            h_ = next;
+            // A factor that underflows the step to zero (a tiny min_factor or safety) keeps this step's size:
+            // a zero would send the next attempt back to the first-step estimate, one evaluation over the
+            // published bound.
+            h_ = next > T(0) ? next : habs;
             err_prev_ = detail::max_value(e, T(1) / T(10000));
             after_rejection_ = false;
             sink(static_cast<const T&>(t), static_cast<const State&>(y), static_cast<const T&>(h),
@@ -405,6 +408,9 @@ public:
         if (!detail::is_finite(dt) || dt == T(0)) return status::invalid_step;
         const T t_end = t + dt;
         if (!detail::is_finite(t_end)) return status::invalid_time;
+        // dt below the rounding of t: the interval is empty and y(t + dt) is y, evaluated nowhere; ok only for
+        // a finite y, as a step that evaluates f at y would find.
+        if (t_end == t) return detail::all_finite(y) ? status::ok : status::non_finite;
         const State start = y;
         T tc = t;
         for (std::size_t n = 0; n < max_substeps_; ++n) {

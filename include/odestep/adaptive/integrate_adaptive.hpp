@@ -84,7 +84,11 @@ template <class Method, class State, class System>
 /// extension of order 4, otherwise cubic Hermite), and a time at a step's end gets the step's own state.
 /// At the end y is the state at the last time. The result's `steps` counts the accepted steps.
 ///
-/// Statuses as integrate_adaptive; invalid_time also when a time is not finite, lies before t0 or before the
+/// Work is bounded: at most `max_attempts` attempted steps, and each accepted step with an output time inside
+/// it completes the interpolant once, hence at most adaptive_rk::rhs_evals_to_start + max_attempts *
+/// (adaptive_rk::rhs_evals_per_attempt + dense_step::rhs_evals_to_complete) evaluations of f.
+/// Statuses as integrate_adaptive (non_finite also when the interpolant overflows at an output time; y is then
+/// the state at the end of the step that holds it, at the returned t); invalid_time also when a time is not finite, lies before t0 or before the
 /// time before it (nothing evaluated or observed). With no times the call does nothing and returns ok.
 template <class Method, class State, class System, class Times, class Observer>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate_times(adaptive_rk<Method, State>& engine, System&& f,
@@ -125,6 +129,8 @@ template <class Method, class State, class System, class Times, class Observer>
             if (s != status::ok) return {s, t, accepted};
             for (; next < count && inside(times[next]); ++next) {
                 dense.at(times[next], u);
+                // The interpolant of a finite step can still overflow between its ends (huge states).
+                if (!detail::all_finite(u)) return {status::non_finite, t, accepted};
                 observe(times[next], static_cast<const State&>(u));
             }
         }
