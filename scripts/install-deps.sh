@@ -4,6 +4,8 @@
 #   scripts/install-deps.sh examples   # compiler, CMake, gnuplot (the gallery's pictures)
 #   scripts/install-deps.sh test       # + clang (and its libFuzzer and sanitizer runtimes, for scripts/fuzz.sh), cppcheck, doxygen, doctest,
 #                                      #   valgrind, Boost/GSL (benchmarks), Cortex-M toolchain, QEMU
+#   scripts/install-deps.sh bench      # the benchmarks alone (bench/install-deps.sh): valgrind, Boost, GSL and
+#                                      #   SUNDIALS, which pulls in MPI (so the test profile leaves it out)
 set -euo pipefail
 profile=${1:-test}
 packages=(g++ cmake make mawk)
@@ -15,6 +17,10 @@ if [ "$profile" = test ]; then
   packages+=(clang libclang-rt-dev clang-format cppcheck doxygen doctest-dev valgrind libboost-dev libgsl-dev binutils
              gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi qemu-system-arm)
 fi
+if [ "$profile" = bench ]; then
+  packages+=(valgrind libboost-dev libgsl-dev libsundials-dev)
+fi
+case "$profile" in examples | test | bench) ;; *) echo "install-deps: unknown profile '$profile'" >&2; exit 2 ;; esac
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
