@@ -109,8 +109,9 @@ struct free_check {
     bool along(T a, T b) const { return t1 < t0 ? a >= b : a <= b; }
 
     void operator()(T t, const S& y) {
-        ODESTEP_FUZZ_TRACE("observe #%llu t=%.17g y0=%.17g (evaluations %u)\n", static_cast<unsigned long long>(observed),
-                           static_cast<double>(t), static_cast<double>(y[0]), f->since);
+        ODESTEP_FUZZ_TRACE("observe #%llu t=%.17g y0=%.17g (evaluations %u)\n",
+                           static_cast<unsigned long long>(observed), static_cast<double>(t), static_cast<double>(y[0]),
+                           f->since);
         ODESTEP_FUZZ_CHECK(std::isfinite(t), "an observer time that is not finite");
         if (times != nullptr) {
             ODESTEP_FUZZ_CHECK(observed < count, "more observations than output times");
@@ -165,11 +166,12 @@ void run_free(reader& in) {
     auto rhs = [&f](T t, const S& x) { return f(t, x); };
     const auto r = sample ? odestep::integrate_times(engine, rhs, y, t0, times, check, max_attempts)
                           : odestep::integrate_adaptive(engine, rhs, y, t0, t1, check, max_attempts);
-    ODESTEP_FUZZ_TRACE("result %s t=%.17g steps=%llu evaluations %u (%zu stages, fsal %d, max_attempts %llu, "
-                       "rejected %llu)\n",
-                       odestep::to_string(r.status), static_cast<double>(r.t), static_cast<unsigned long long>(r.steps),
-                       f.evaluations, engine_t::stages, int(engine_t::fsal), static_cast<unsigned long long>(max_attempts),
-                       static_cast<unsigned long long>(engine.rejected_steps()));
+    ODESTEP_FUZZ_TRACE(
+        "result %s t=%.17g steps=%llu evaluations %u (%zu stages, fsal %d, max_attempts %llu, "
+        "rejected %llu)\n",
+        odestep::to_string(r.status), static_cast<double>(r.t), static_cast<unsigned long long>(r.steps), f.evaluations,
+        engine_t::stages, int(engine_t::fsal), static_cast<unsigned long long>(max_attempts),
+        static_cast<unsigned long long>(engine.rejected_steps()));
     ODESTEP_FUZZ_CHECK(valid(r.status), "a status outside the enum");
     // integrate_times completes the interpolant in a step with an output time inside: its evaluations too.
     const std::uint64_t per_attempt =
