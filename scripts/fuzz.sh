@@ -22,7 +22,7 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
 
-read -r -a targets <<< "${FUZZ_TARGETS:-fuzz_loops fuzz_loops_newtonian fuzz_steps fuzz_events fuzz_adaptive}"
+read -r -a targets <<< "${FUZZ_TARGETS:-fuzz_loops fuzz_loops_newtonian fuzz_steps fuzz_events fuzz_adaptive fuzz_c_api}"
 quick_seconds=15
 cxx=${CXX_FUZZ:-clang++}
 dir=${FUZZ_BUILD_DIR:-$root/build/fuzz}
@@ -67,11 +67,14 @@ built=0
 pids=()
 for t in "${targets[@]}"; do
   # Rebuild when the target, the shared checks or any header is newer than the binary.
+  # fuzz_c_api calls the C API: the library's sources (src/) are built into it.
+  extra=()
+  [ "$t" = fuzz_c_api ] && extra=("$root"/src/*.cpp)
   if [ -x "$dir/$t" ] && [ -z "$(find "$root/tests/fuzz/$t.cpp" "$root/tests/fuzz/fuzz_support.hpp" "$root/include" \
-    -newer "$dir/$t" -print -quit)" ]; then
+    "$root/src" -newer "$dir/$t" -print -quit)" ]; then
     continue
   fi
-  ("$cxx" "${flags[@]}" "$root/tests/fuzz/$t.cpp" -o "$dir/$t.new" > "$dir/$t.build.log" 2>&1 &&
+  ("$cxx" "${flags[@]}" "$root/tests/fuzz/$t.cpp" "${extra[@]}" -o "$dir/$t.new" > "$dir/$t.build.log" 2>&1 &&
     mv "$dir/$t.new" "$dir/$t") &
   pids+=($!)
   # two compilations at a time

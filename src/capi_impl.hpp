@@ -186,16 +186,11 @@ struct ops_of {
 
 template <class S>
 constexpr method_ops<typename S::value_type> make_ops(const char* name) noexcept {
-    return {name,
-            S::order,
-            estimates_of<S>::value,
-            S::system == system_form::newtonian,
-            S::uniform_steps,
-            static_cast<unsigned>(S::rhs_evals_per_step),
-            &ops_of<S>::construct,
-            &ops_of<S>::reset,
-            &ops_of<S>::step,
-            &ops_of<S>::step_newton};
+    return {name, S::order, estimates_of<S>::value, S::system == system_form::newtonian, S::uniform_steps,
+            // The most of either step: Dormand-Prince's estimating step makes one more than its plain step.
+            static_cast<unsigned>(S::rhs_evals_per_step > S::rhs_evals_per_error_step ? S::rhs_evals_per_step
+                                                                                      : S::rhs_evals_per_error_step),
+            &ops_of<S>::construct, &ops_of<S>::reset, &ops_of<S>::step, &ops_of<S>::step_newton};
 }
 
 // ---- the C functions, for one precision

@@ -100,6 +100,7 @@ typedef struct odestep_method_info {
     int newtonian;                ///< 1: steps x'' = a(t, x) (odestep_step_newton_d); 0: y' = f(t, y)
     int uniform_steps;            ///< 1: every step of one history must have the same dt (Adams)
     unsigned rhs_evals_per_step;  ///< the most right-hand-side (or acceleration) evaluations one step makes
+                                  ///< (the plain or the estimating step, whichever makes more)
 } odestep_method_info;
 
 /* ---- double ------------------------------------------------------------------------------------------- */

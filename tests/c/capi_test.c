@@ -433,6 +433,10 @@ static void test_names_and_info(void) {
     CHECK(info.order == 4 && info.uniform_steps == 1);
     CHECK(odestep_method_info_d(&odestep_dop853_d, &info) == ODESTEP_OK);
     CHECK(info.order == 8 && info.error_estimates == 2);
+    /* Dormand-Prince 5(4): 7 stages, the 7th f(t + dt, y_new) (first same as last); the plain step does not
+     * need it, the estimating step does, and the bound is the larger: 7 (Dormand & Prince 1980, Table 2). */
+    CHECK(odestep_method_info_d(&odestep_dp54_d, &info) == ODESTEP_OK);
+    CHECK(info.order == 5 && info.error_estimates == 1 && info.rhs_evals_per_step == 7);
     CHECK(odestep_method_info_d(&odestep_velocity_verlet_d, &info) == ODESTEP_OK);
     CHECK(info.order == 2 && info.newtonian == 1);
     CHECK(odestep_method_info_d(NULL, &info) == ODESTEP_INVALID_SETTING);
