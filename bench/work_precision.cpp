@@ -335,17 +335,51 @@ void measure(const state_t<P>& ref, int rounds, std::vector<point>& out) {
     }
 }
 
+/// The reference y(t1), and how far it can be off: the difference of the two long double solutions (DOP853
+/// and RKF 7(8)). Exits when a check fails: the two solutions apart by more than 1e-11; Arenstorf's y(t1) more
+/// than 1e-9 from y(0) (the orbit's period, up to y(0) and T rounded to double: 1.4e-11 measured); the
+/// Pleiades' y(3) more than 1e-13 from the test set's published one (rounded to 16 digits: 1e-15 measured).
 template <class P>
-state_t<P> reference() {
+state_t<P> reference(double& uncertainty) {
     const auto a = long_double_solution<P, odestep::tables::dop853>();
     const auto b = long_double_solution<P, odestep::tables::fehlberg78>();
     state_t<P> ref{};
     for (std::size_t i = 0; i < P::N; ++i) ref[i] = static_cast<double>(a[i]);
-    std::printf("REFERENCE\t%s\tt1=%.17g\tdop853_vs_rkf78=%.2e", P::name, P::t1, max_abs_diff(a, b));
-    if constexpr (std::is_same_v<P, arenstorf>) std::printf("\tvs_y0=%.2e", max_abs_diff(a, P::y0()));
-    if constexpr (std::is_same_v<P, pleiades>) std::printf("\tvs_published=%.2e", max_abs_diff(a, P::published()));
+    uncertainty = max_abs_diff(a, b);
+    bool ok = uncertainty <= 1e-11;
+    std::printf("REFERENCE\t%s\tt1=%.17g\tdop853_vs_rkf78=%.2e", P::name, P::t1, uncertainty);
+    if constexpr (std::is_same_v<P, arenstorf>) {
+        const double d = max_abs_diff(a, P::y0());
+        ok = ok && d <= 1e-9;
+        std::printf("\tvs_y0=%.2e", d);
+    }
+    if constexpr (std::is_same_v<P, pleiades>) {
+        const double d = max_abs_diff(a, P::published());
+        ok = ok && d <= 1e-13;
+        std::printf("\tvs_published=%.2e", d);
+    }
     std::printf("\n");
+    if (!ok) {
+        std::fprintf(stderr, "work_precision: the %s reference fails its check\n", P::name);
+        std::exit(1);
+    }
     return ref;
+}
+
+/// Measures P; exits when a run's error is within 100 times the reference's uncertainty (the reference would
+/// then not be far enough below the errors it measures).
+template <class P>
+void problem(int rounds, std::vector<point>& all) {
+    double uncertainty = 0;
+    const auto ref = reference<P>(uncertainty);
+    const std::size_t first = all.size();
+    measure<P>(ref, rounds, all);
+    for (std::size_t i = first; i < all.size(); ++i)
+        if (!(all[i].error >= 100 * uncertainty)) {
+            std::fprintf(stderr, "work_precision: %s %s tol %.1e: error %.2e too close to the reference's %.2e\n",
+                         P::name, all[i].solver.c_str(), all[i].tol, all[i].error, uncertainty);
+            std::exit(1);
+        }
 }
 
 // --- the tables ----------------------------------------------------------------------------------------------
@@ -459,9 +493,9 @@ int main(int argc, char** argv) {
     const int rounds = argc > 2 ? std::atoi(argv[2]) : 11;
     gsl_set_error_handler_off();
     std::vector<point> all;
-    measure<arenstorf>(reference<arenstorf>(), rounds, all);
-    measure<lorenz>(reference<lorenz>(), rounds, all);
-    measure<pleiades>(reference<pleiades>(), rounds, all);
+    problem<arenstorf>(rounds, all);
+    problem<lorenz>(rounds, all);
+    problem<pleiades>(rounds, all);
 
     FILE* out = std::fopen(csv, "w");
     if (out == nullptr) {
