@@ -95,12 +95,21 @@ if ((${#missing[@]} > 0)); then
 fi
 
 # --- building and running one case -------------------------------------------------------------------------
+# ARKODE's optional rows (bench/sundials.hpp; lorenz_rk4's `arkode`) in the full run where SUNDIALS is
+# installed; the quick gate builds without them, as it always did.
+sundials_flags=(-DBENCH_NO_SUNDIALS)
+sundials_libs=()
+if ((!quick && !work_precision)) && ((have_cxx)) && header_ok arkode/arkode_arkstep.h; then
+  sundials_flags=()
+  sundials_libs=(-lsundials_arkode -lsundials_nvecserial)
+fi
+
 # build <dir> <opt> <case>: compiles bench/<case>.cpp into <dir>/<case>; the compiler's output goes to
 # <dir>/<case>.build.log.
 build() {
   local dir=$1 opt=$2 name=$3
-  "$CXX" "${common_flags[@]}" "$opt" -I"$root/include" "$root/bench/$name.cpp" -o "$dir/$name" "${libs[@]}" \
-    > "$dir/$name.build.log" 2>&1
+  "$CXX" "${common_flags[@]}" "$opt" "${sundials_flags[@]}" -I"$root/include" "$root/bench/$name.cpp" \
+    -o "$dir/$name" "${libs[@]}" "${sundials_libs[@]}" > "$dir/$name.build.log" 2>&1
 }
 
 # code_sizes <dir> <opt> <case>: prints "<opt> SIZE case variant bytes" for every variant of <dir>/<case>:
