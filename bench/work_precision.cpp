@@ -384,18 +384,19 @@ void problem(int rounds, std::vector<point>& all) {
 
 // --- the tables ----------------------------------------------------------------------------------------------
 
-/// The evaluations and the CPU time a solver needs for error e, interpolated log-log between the two
-/// tolerances around the first one that reaches e (NaN when its loosest run is already below e or none
-/// reaches it).
+/// The evaluations and the CPU time a solver needs for error e: interpolated log-log between the two
+/// tolerances around the last one at which its error falls through e, so that every tighter tolerance reaches
+/// e too (on a curve that is not monotone, the first such tolerance would flatter it). NaN when its tightest
+/// run does not reach e, or its loosest is already below it.
 struct matched {
     double evals = std::nan(""), cpu_us = std::nan("");
 };
 matched at_error(const std::vector<const point*>& pts, double e) {
-    for (std::size_t k = 1; k < pts.size(); ++k) {
-        if (!(pts[k]->error <= e)) continue;
+    if (pts.size() < 2 || !(pts.back()->error <= e)) return {};
+    for (std::size_t k = pts.size() - 1; k >= 1; --k) {
         const point& a = *pts[k - 1];
         const point& b = *pts[k];
-        if (!(a.error > e)) return {};
+        if (!(a.error > e)) continue;
         const double w = std::log(e / a.error) / std::log(b.error / a.error);
         const auto lerp = [w](double x, double y) { return std::exp(std::log(x) + w * (std::log(y) - std::log(x))); };
         return {lerp(static_cast<double>(a.evals), static_cast<double>(b.evals)), lerp(a.cpu_us, b.cpu_us)};

@@ -312,7 +312,8 @@ wp_<problem>_time.png (\`scripts/work_precision_plot.sh\`); discussion: docs/ada
   chooses, computed outside the count. ARKODE is ARKStep in explicit mode (not ERKStep, SUNDIALS issue 311),
   its defaults otherwise (controller, first step, Hermite interpolant), ARKStepReInit before every run.
 - At a given error, each solver's evaluations and time are interpolated log-log between the two tolerances
-  around the first one that reaches it ("-": its loosest run is already below, or no run reaches it).
+  around the last one at which its error falls through it, so that every tighter tolerance reaches it too
+  ("-": its tightest run does not reach it, or its loosest is already below it).
   Ratios: odestep's better pair over the best of all the others (the issue's target: evaluations <= 1 and
   time < 1), and each odestep pair over the peers of its order.
 
