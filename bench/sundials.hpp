@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 // odestep benchmarks: SUNDIALS ARKODE (ARKStep, implicit part only) as a fixed-step DIRK stepper, for the stiff
-// cases. Optional: BENCH_HAVE_SUNDIALS is defined only where <arkode/arkode_arkstep.h> exists (Debian:
-// libsundials-dev, installed by bench/install-deps.sh), so the cases build without it. Link with
+// cases; ARKStep's explicit part (arkode_erk, at the end) for the nonstiff ones. Optional: BENCH_HAVE_SUNDIALS
+// is defined only where <arkode/arkode_arkstep.h> exists (Debian: libsundials-dev, installed by
+// bench/install-deps.sh), so the cases build without it. Link with
 //   -lsundials_arkode -lsundials_nvecserial -lsundials_sunlinsoldense -lsundials_sunmatrixdense
 //
 // The set-up mirrors odestep's implicit steppers as closely as ARKODE allows:
@@ -160,6 +161,116 @@ private:
     N_Vector y_ = nullptr;
     SUNMatrix a_ = nullptr;
     SUNLinearSolver ls_ = nullptr;
+    void* mem_ = nullptr;
+};
+
+/// ARKODE's explicit Runge-Kutta through ARKStep (ARKStepCreate(fe, NULL, ...): the explicit part only, no
+/// linear solver), for the nonstiff cases. Not ERKStep: in SUNDIALS 6.4.1 ERKStep has a bug (upstream issue
+/// 311) that ARKStep in explicit mode does not share. Two uses:
+///   - adaptive (work-precision, bench/work_precision.cpp): a built-in ERK table with its embedding and
+///     everything else ARKODE's default (its error norm, controller and first-step estimate), run from t0 to
+///     t1 with ARKStepSetStopTime(t1) and ARK_NORMAL, so the last step lands on t1 (no interpolation);
+///   - fixed step (bench/lorenz_rk4.cpp): a user table without embedding, ARKStepSetFixedStep(h), one
+///     ARKStepEvolve(..., ARK_ONE_STEP) per benchmark step, as arkode_dirk.
+/// Memory is allocated once here (and lazily in the first step); every run starts with ARKStepReset, which
+/// keeps it (ARKStepReInit in the adaptive use, see integrate()). The interpolant is ARKODE's default
+/// (Hermite) unless set_lagrange() is called.
+class arkode_erk {
+public:
+    /// Adaptive, built-in table `id` (e.g. ARKODE_DORMAND_PRINCE_7_4_5), tolerances rtol = atol = 1e-6 until
+    /// set_tolerance().
+    arkode_erk(ARKRhsFn fe, std::size_t n, ARKODE_ERKTableID id) {
+        init(fe, n);
+        must(ARKStepSetTableNum(mem_, ARKODE_DIRK_NONE, id), "ARKStepSetTableNum");
+    }
+    /// Fixed step h, user table (no embedding), copied by ARKODE.
+    arkode_erk(ARKRhsFn fe, std::size_t n, double h, const arkode_user_table& table) {
+        init(fe, n);
+        ARKodeButcherTable b =
+            ARKodeButcherTable_Create(table.stages, table.order, 0, const_cast<double*>(table.c),
+                                      const_cast<double*>(table.a), const_cast<double*>(table.b), nullptr);
+        if (b == nullptr) must(-1, "ARKodeButcherTable_Create");
+        must(ARKStepSetTables(mem_, table.order, 0, nullptr, b), "ARKStepSetTables");
+        ARKodeButcherTable_Free(b);
+        must(ARKStepSetFixedStep(mem_, h), "ARKStepSetFixedStep");
+    }
+    ~arkode_erk() {
+        ARKStepFree(&mem_);
+        N_VDestroy(y_);
+        SUNContext_Free(&ctx_);
+    }
+    arkode_erk(const arkode_erk&) = delete;
+    arkode_erk& operator=(const arkode_erk&) = delete;
+
+    /// rtol = atol = tol (ARKODE's weights 1 / (tol |y_i| + tol), weighted root-mean-square norm).
+    void set_tolerance(double tol) { must(ARKStepSStolerances(mem_, tol, tol), "ARKStepSStolerances"); }
+    /// Lagrange interpolation (solutions only) instead of the default Hermite one.
+    void set_lagrange() { must(ARKStepSetInterpolantType(mem_, ARK_INTERP_LAGRANGE), "ARKStepSetInterpolantType"); }
+
+    /// A new run from y0 at t0: ARKStepReset, which keeps every allocation.
+    void start(const double* y0, double t0) {
+        double* y = N_VGetArrayPointer(y_);
+        for (std::size_t i = 0; i < n_; ++i) y[i] = y0[i];
+        must(ARKStepReset(mem_, t0, y_), "ARKStepReset");
+    }
+
+    /// One fixed step from ARKODE's current time to y (the fixed-step use).
+    int step(double* y, double t, double h) {
+        double tret = 0;
+        const int flag = ARKStepEvolve(mem_, t + h, y_, &tret, ARK_ONE_STEP);
+        copy_out(y);
+        return flag < 0 ? 1 : 0;
+    }
+
+    /// The adaptive use: y (in: the state at t0, out: at t1) from t0 to exactly t1. Returns ARKODE's flag.
+    /// ARKStepReInit, not ARKStepReset: Reset keeps the last step size and the controller's history, so a
+    /// second run from the same y0 would take other steps than the first; ReInit starts afresh (the first
+    /// step estimated again), keeps the options and every allocation.
+    int integrate(double* y, double t0, double t1) {
+        double* v = N_VGetArrayPointer(y_);
+        for (std::size_t i = 0; i < n_; ++i) v[i] = y[i];
+        must(ARKStepReInit(mem_, fe_, nullptr, t0, y_), "ARKStepReInit");
+        must(ARKStepSetStopTime(mem_, t1), "ARKStepSetStopTime");
+        double tret = 0;
+        const int flag = ARKStepEvolve(mem_, t1, y_, &tret, ARK_NORMAL);
+        copy_out(y);
+        return flag;
+    }
+
+    /// The last run's accepted steps and rejected attempts (error test failures), ARKODE's counters (which
+    /// ARKStepReInit sets to zero).
+    void steps(long& accepted, long& rejected) const {
+        ARKStepGetNumSteps(mem_, &accepted);
+        ARKStepGetNumErrTestFails(mem_, &rejected);
+    }
+
+private:
+    static void must(int flag, const char* what) {
+        if (flag < 0) {
+            std::fprintf(stderr, "bench: SUNDIALS %s failed (%d)\n", what, flag);
+            std::exit(2);
+        }
+    }
+    void init(ARKRhsFn fe, std::size_t n) {
+        n_ = n;
+        fe_ = fe;
+        must(SUNContext_Create(nullptr, &ctx_), "SUNContext_Create");
+        y_ = N_VNew_Serial(static_cast<sunindextype>(n), ctx_);
+        N_VConst(0.0, y_);
+        mem_ = ARKStepCreate(fe, nullptr, 0.0, y_, ctx_);
+        if (mem_ == nullptr) must(-1, "ARKStepCreate");
+        must(ARKStepSStolerances(mem_, 1e-6, 1e-6), "ARKStepSStolerances");
+        must(ARKStepSetMaxNumSteps(mem_, -1), "ARKStepSetMaxNumSteps");  // no limit (the default is 500)
+    }
+    void copy_out(double* y) const {
+        const double* v = N_VGetArrayPointer(y_);
+        for (std::size_t i = 0; i < n_; ++i) y[i] = v[i];
+    }
+
+    std::size_t n_ = 0;
+    ARKRhsFn fe_ = nullptr;
+    SUNContext ctx_ = nullptr;
+    N_Vector y_ = nullptr;
     void* mem_ = nullptr;
 };
 

@@ -18,7 +18,14 @@
 #                              directory; passes if the variants agree and odestep's instructions per step
 #                              are at most 1.02x those of the hand-written loop with odestep's guarantee
 #                              (hand_checked: unrolled, NaN/Inf test, roll-back). Writes nothing in the tree.
-# Both end with the line "bench: N passed, M failed".
+#   scripts/bench.sh --work-precision
+#                              the adaptive solvers' work-precision (bench/work_precision.cpp, issue 15): odestep,
+#                              Odeint, GSL and, where SUNDIALS is installed, ARKODE on Arenstorf, Lorenz and the
+#                              Pleiades at 19 tolerances, -O2, in build/bench/wp/ (1 to 2 minutes); writes
+#                              bench/work_precision.csv, docs/gallery/wp_*.png (with gnuplot) and the section
+#                              "Work-precision (adaptive)" of bench/RESULTS.md, nothing else. BENCH_ROUNDS: the
+#                              timed runs per solver and tolerance (default 21 here).
+# All end with the line "bench: N passed, M failed".
 #
 # Environment: CXX (default g++), JOBS (parallel compiles, default nproc), BENCH_ROUNDS (timing rounds,
 # default 51), BENCH_BUILD_DIR (default build/bench).
@@ -30,15 +37,17 @@ cd "$(dirname "$0")/.."
 root=$PWD
 
 quick=0
+work_precision=0
 case "${1:-}" in
   --quick) quick=1 ;;
+  --work-precision) work_precision=1 ;;
   "") ;;
   -h | --help)
     sed -n '2,/^set -uo/p' "$0" | sed '$d; s/^# \{0,1\}//'
     exit 0
     ;;
   *)
-    echo "bench: unknown argument '$1' (use --quick or nothing)" >&2
+    echo "bench: unknown argument '$1' (use --quick, --work-precision or nothing)" >&2
     exit 2
     ;;
 esac
@@ -86,12 +95,21 @@ if ((${#missing[@]} > 0)); then
 fi
 
 # --- building and running one case -------------------------------------------------------------------------
+# ARKODE's optional rows (bench/sundials.hpp; lorenz_rk4's `arkode`) in the full run where SUNDIALS is
+# installed; the quick gate builds without them, as it always did.
+sundials_flags=(-DBENCH_NO_SUNDIALS)
+sundials_libs=()
+if ((!quick && !work_precision)) && ((have_cxx)) && header_ok arkode/arkode_arkstep.h; then
+  sundials_flags=()
+  sundials_libs=(-lsundials_arkode -lsundials_nvecserial)
+fi
+
 # build <dir> <opt> <case>: compiles bench/<case>.cpp into <dir>/<case>; the compiler's output goes to
 # <dir>/<case>.build.log.
 build() {
   local dir=$1 opt=$2 name=$3
-  "$CXX" "${common_flags[@]}" "$opt" -I"$root/include" "$root/bench/$name.cpp" -o "$dir/$name" "${libs[@]}" \
-    > "$dir/$name.build.log" 2>&1
+  "$CXX" "${common_flags[@]}" "$opt" "${sundials_flags[@]}" -I"$root/include" "$root/bench/$name.cpp" \
+    -o "$dir/$name" "${libs[@]}" "${sundials_libs[@]}" > "$dir/$name.build.log" 2>&1
 }
 
 # code_sizes <dir> <opt> <case>: prints "<opt> SIZE case variant bytes" for every variant of <dir>/<case>:
@@ -224,6 +242,100 @@ if ((quick)); then
   exit $?
 fi
 
+# --- work-precision mode -------------------------------------------------------------------------------------
+# The section of bench/RESULTS.md this mode writes, from its heading to the next "## " heading or the end; the
+# full mode keeps it as it is.
+wp_heading='## Work-precision (adaptive)'
+wp_section() { awk -v h="$wp_heading" '$0 == h { p = 1; print; next } p && /^## / { p = 0 } p' "$1"; }
+if ((work_precision)); then
+  start=$SECONDS
+  base=${BENCH_BUILD_DIR:-$root/build/bench}
+  dir=$base/wp
+  mkdir -p "$dir"
+  wp_rounds=${BENCH_ROUNDS:-21}
+  wp_libs=("${libs[@]}")
+  wp_flags=()
+  version() { printf '#include <%s>\n%s\n' "$1" "$2" | "$CXX" -x c++ -E -P - 2> /dev/null | tail -n 1 | tr -d '"'; }
+  if header_ok arkode/arkode_arkstep.h; then
+    wp_libs+=(-lsundials_arkode -lsundials_nvecserial)
+    arkode="SUNDIALS $(version sundials/sundials_config.h SUNDIALS_VERSION) ARKODE"
+  else
+    wp_flags+=(-DBENCH_NO_SUNDIALS)
+    arkode="no ARKODE rows (SUNDIALS not installed: bench/install-deps.sh)"
+  fi
+  echo "=== building bench/work_precision.cpp at -O2 in $dir ($arkode)"
+  if ! "$CXX" "${common_flags[@]}" -O2 "${wp_flags[@]}" -I"$root/include" "$root/bench/work_precision.cpp" \
+    -o "$dir/work_precision" "${wp_libs[@]}" > "$dir/work_precision.build.log" 2>&1; then
+    cat "$dir/work_precision.build.log" >&2
+    summary 0 1
+    exit 1
+  fi
+  echo "=== running it ($wp_rounds timed runs per solver and tolerance)"
+  if ! (cd "$dir" && ./work_precision work_precision.csv "$wp_rounds") > "$dir/work_precision.md"; then
+    echo "bench: work_precision failed" >&2
+    summary 0 1
+    exit 1
+  fi
+  cp "$dir/work_precision.csv" "$root/bench/work_precision.csv"
+  if command -v gnuplot > /dev/null; then
+    if ! scripts/work_precision_plot.sh bench/work_precision.csv docs/gallery; then
+      summary 0 1
+      exit 1
+    fi
+  else
+    echo "bench: gnuplot is missing: docs/gallery/wp_*.png not redrawn (scripts/install-deps.sh examples)" >&2
+  fi
+  compiler=$("$CXX" --version | head -n 1)
+  cpu=$(lscpu 2> /dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n 1)
+  load=$(cut -d' ' -f1-3 /proc/loadavg 2> /dev/null || echo "?")
+  new_section=$(
+    cat << EOF
+$wp_heading
+
+Written by \`scripts/bench.sh --work-precision\` (this section only; the full run keeps it as it is). Source:
+bench/work_precision.cpp; data: bench/work_precision.csv; pictures: docs/gallery/wp_<problem>_evals.png and
+wp_<problem>_time.png (\`scripts/work_precision_plot.sh\`); discussion: docs/adaptive.md, "Work-precision".
+
+- ${compiler}, \`${common_flags[*]} -O2\`.
+- ${cpu:-unknown CPU}, $(nproc 2> /dev/null || echo "?") CPUs, load average ${load} at the end (shared with other jobs).
+- Boost $(version boost/version.hpp BOOST_LIB_VERSION | tr _ .) (Odeint), GSL $(version gsl/gsl_version.h GSL_VERSION) (the distribution's shared library), ${arkode}.
+- Every solver at rtol = atol = tol, tol = 1e-3 .. 1e-12 in half decades, from t0 to exactly t1. The norms
+  differ, so the same tol means different things (the tables compare at equal achieved error): odestep and
+  ARKODE take the root mean square of err_i / (atol + rtol |y_i|) (odestep: max(|y_n,i|, |y_n+1,i|); ARKODE:
+  |y_n,i|, and a safety factor on the estimate), Odeint the maximum over i with atol + rtol (|y_i| + h |f_i|),
+  GSL the maximum with atol + rtol |y_i| (rejecting only above 1.1).
+- error: max_i |y_i(t1) - ref_i| (absolute). evals: every call of f in the run (first-step estimates
+  included), deterministic; each repeated run must give the same count and the same final state bit for bit.
+  us: the thread's CPU time of one whole run, median of ${wp_rounds} runs (the solvers interleaved, the order
+  rotated). The machine was loaded: the times carry noise of several per cent, the evaluations none.
+- Odeint and GSL take the first step from the caller: they are given the one odestep's estimate (HNW's)
+  chooses, computed outside the count. ARKODE is ARKStep in explicit mode (not ERKStep, SUNDIALS issue 311),
+  its defaults otherwise (controller, first step, Hermite interpolant), ARKStepReInit before every run.
+- At a given error, each solver's evaluations and time are interpolated log-log between the two tolerances
+  around the last one at which its error falls through it, so that every tighter tolerance reaches it too
+  ("-": its tightest run does not reach it, or its loosest is already below it).
+  Ratios: odestep's better pair over the best of all the others (the issue's target: evaluations <= 1 and
+  time < 1), and each odestep pair over the peers of its order.
+
+References (t1; the two long double solutions' difference; the independent checks):
+
+\`\`\`
+$(grep '^REFERENCE' "$dir/work_precision.md")
+\`\`\`
+$(grep -v '^REFERENCE' "$dir/work_precision.md")
+EOF
+  )
+  {
+    awk -v h="$wp_heading" '$0 == h { skip = 1; next } skip && /^## / { skip = 0 } !skip' "$root/bench/RESULTS.md" |
+      sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'
+    printf '\n%s\n' "$new_section"
+  } > "$dir/RESULTS.md"
+  mv "$dir/RESULTS.md" "$root/bench/RESULTS.md"
+  echo "=== wrote bench/work_precision.csv and its section of bench/RESULTS.md ($((SECONDS - start))s)"
+  summary 1 0
+  exit 0
+fi
+
 # --- full mode ----------------------------------------------------------------------------------------------
 start=$SECONDS
 base=${BENCH_BUILD_DIR:-$root/build/bench}
@@ -312,6 +424,7 @@ ncpu=$(nproc 2> /dev/null || echo "?")
 boost=$(printf '#include <boost/version.hpp>\nBOOST_LIB_VERSION\n' | "$CXX" -x c++ -E -P - 2> /dev/null | tail -n 1 | tr -d '"' | tr _ .)
 gsl=$(printf '#include <gsl/gsl_version.h>\nGSL_VERSION\n' | "$CXX" -x c++ -E -P - 2> /dev/null | tail -n 1 | tr -d '"')
 vg=$(valgrind --version)
+kept_wp=$(wp_section "$root/bench/RESULTS.md")
 
 {
   cat << EOF
@@ -524,6 +637,8 @@ Notes:
   from the ticks' reports to match the closed forms, and a tick in which nothing fires to cost no more than
   the step's 4 evaluations of f and one of each g.
 EOF
+  # The work-precision section (scripts/bench.sh --work-precision) is not measured here: kept as it was.
+  [ -z "$kept_wp" ] || printf '\n%s\n' "$kept_wp"
 } > "$root/bench/RESULTS.md"
 
 echo
