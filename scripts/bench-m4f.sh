@@ -13,7 +13,7 @@
 # Usage: scripts/bench-m4f.sh [--report FILE] [--docs FILE] [extra compiler flags...]
 #   --report FILE  also write the table (with its heading) to FILE (scripts/audit.sh: build/audit/)
 #   --docs FILE    replace the lines between "<!-- bench-m4f:begin -->" and "<!-- bench-m4f:end -->" in
-#                  FILE with the table (docs/cortex-m.md)
+#                  FILE with the table (docs/cortex-m.md), if every build, run and check passed
 #   flags          e.g. -DODESTEP_STEP_FLATTEN= -DODESTEP_STEP_UNROLL= (the library's -Os form before issue 18)
 # Environment: JOBS (parallel compiles, default 2).
 # Needs arm-none-eabi-g++ with newlib and qemu-system-arm (Debian: gcc-arm-none-eabi libnewlib-arm-none-eabi
@@ -96,14 +96,14 @@ table=$dir/table.md
     $1 == "ROW" {
       if (!($2 in seen)) { seen[$2] = 1; order[++n] = $2 }
       value[$2, file] = $3 SUBSEP $4 SUBSEP $5
-      if ($7 != "ok") verdict[$2] = verdict[$2] " " $7
+      if ($7 != "ok") verdict[$2] = verdict[$2] (file == 1 ? " -O2 " : " -Os ") $7
     }
     END {
       for (i = 1; i <= n; i++) {
         s = order[i]
         o2 = ((s, 1) in value) ? cells(value[s, 1]) : "- | - | - | - | -"
         os = ((s, 2) in value) ? cells(value[s, 2]) : "- | - | - | - | -"
-        printf "| %s%s | %s | %s |\n", s, (s in verdict) ? " **" verdict[s] "**" : "", o2, os
+        printf "| %s%s | %s | %s |\n", s, (s in verdict) ? " **" substr(verdict[s], 2) "**" : "", o2, os
       }
     }' "$dir/out-O2" "$dir/out-Os" 2> /dev/null
 } > "$table"
@@ -112,7 +112,8 @@ cat "$table"
 if [[ -n "$report_file" ]]; then
   cp "$table" "$report_file"
 fi
-if [[ -n "$docs_file" ]]; then
+# The docs take the table only from a run that passed.
+if [[ -n "$docs_file" && $failed == 0 ]]; then
   if grep -q '^<!-- bench-m4f:begin -->$' "$docs_file" && grep -q '^<!-- bench-m4f:end -->$' "$docs_file"; then
     awk -v table="$table" '
       /^<!-- bench-m4f:begin -->$/ { print; while ((getline line < table) > 0) print line; skip = 1; next }
