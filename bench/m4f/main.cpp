@@ -104,10 +104,10 @@ void report(const m4f::row_def& r) {
     if (bad || !agree) ++failures;
     char cells[3][16];
     for (int k = 0; k < 3; ++k) {
-        const int whole = static_cast<int>(values[k]);
+        const int whole = static_cast<int>(values[k] + 0.5f);  // a whole number where %.1f would end in .0
         if (values[k] < -0.5f)
             std::snprintf(cells[k], sizeof cells[k], "-");
-        else if (static_cast<float>(whole) == values[k])
+        else if (magnitude(values[k] - static_cast<float>(whole)) < 0.05f)
             std::snprintf(cells[k], sizeof cells[k], "%d", whole);
         else
             std::snprintf(cells[k], sizeof cells[k], "%.1f", static_cast<double>(values[k]));
