@@ -6,7 +6,8 @@
 // rtol = atol = 1e-3 .. 1e-10 (float: 1e-3 .. 1e-5), every evaluation of f counted. Checked: the achieved
 // error within a stated factor of the tolerance, the fitted log-log slope of error against tolerance near 1,
 // the evaluations growing as the tolerance tightens, and the count of f calls against the engine's own
-// counts of accepted and rejected steps.
+// counts of accepted and rejected steps. The double sweeps (about 2e5 evaluations in all) are in the "long"
+// suite, run on the host only; the closed-form checks and the float runs also run on the emulated cores.
 #include <doctest/doctest.h>
 #include <odestep/adaptive/integrate_adaptive.hpp>
 
@@ -190,7 +191,11 @@ ld kepler_anomaly(ld e, ld mean) noexcept {
 template <int Tenths>
 struct kepler_d {
     static constexpr std::size_t n = 4;
-    static constexpr const char* name = Tenths == 1 ? "D1" : Tenths == 3 ? "D2" : Tenths == 5 ? "D3" : Tenths == 7 ? "D4" : "D5";
+    static constexpr const char* name = Tenths == 1   ? "D1"
+                                        : Tenths == 3 ? "D2"
+                                        : Tenths == 5 ? "D3"
+                                        : Tenths == 7 ? "D4"
+                                                      : "D5";
     static constexpr double bound = Tenths == 1 ? 2e3 : 5e5;
     template <class T>
     void operator()(T, const std::array<T, 4>& y, std::array<T, 4>& d) const noexcept {
@@ -295,8 +300,6 @@ double fitted_slope(const std::array<double, K>& tols, const std::array<double, 
     return (k * sxy - sx * sy) / (k * sxx - sx * sx);
 }
 
-
-
 // Fitted slope of error against tolerance: 1 for tolerance proportionality (global error ~ h^p and
 // h ~ tol^(1/p) for a pair that propagates order p with an estimate of order p, p = 5 and 8 here).
 constexpr double slope_low = 0.7;
@@ -319,8 +322,9 @@ void proportionality(const char* method) {
         REQUIRE(r.s == status::ok);
         tols[i] = tol;
         errors[i] = static_cast<double>(r.error);
-        MESSAGE(std::string(method) << " " << std::string(Problem::name) << " tol " << tol << " error " << errors[i] << " ratio "
-                       << errors[i] / tol << " f " << r.calls << " (" << r.accepted << "/" << r.rejected << ")");
+        MESSAGE(std::string(method) << " " << std::string(Problem::name) << " tol " << tol << " error " << errors[i]
+                                    << " ratio " << errors[i] / tol << " f " << r.calls << " (" << r.accepted << "/"
+                                    << r.rejected << ")");
         CHECK(errors[i] <= Problem::bound * tol);
         CHECK(errors[i] > 0.0);  // the run did compare something
         // Work grows (never falls) as the tolerance tightens.
@@ -362,7 +366,8 @@ void float_runs(const char* method) {
         const run_result r = run<Method, Problem>(tol);
         REQUIRE(r.s == status::ok);
         const double err = static_cast<double>(r.error);
-        MESSAGE(std::string(method) << " float " << std::string(Problem::name) << " tol " << tol << " error " << err << " f " << r.calls);
+        MESSAGE(std::string(method) << " float " << std::string(Problem::name) << " tol " << tol << " error " << err
+                                    << " f " << r.calls);
         CHECK(err <= Problem::bound * static_cast<double>(tol));
         CHECK(err < previous);
         previous = err;
@@ -425,23 +430,29 @@ TEST_CASE("DETEST: the closed forms used as references solve their equations") {
     CHECK(std::fabs(y[1] - ld(0.09540051444747446)) < ld(1e-15));
 }
 
-TEST_CASE("DETEST class A: error proportional to the tolerance, 1e-3 .. 1e-10") {
+TEST_CASE("DETEST class A: error proportional to the tolerance, 1e-3 .. 1e-10" * doctest::test_suite("long")) {
     all_methods<a1>();
     all_methods<a2>();
     all_methods<a3>();
     all_methods<a4>();
 }
 
-TEST_CASE("DETEST class B (B2): error proportional to the tolerance") { all_methods<b2>(); }
+TEST_CASE("DETEST class B (B2): error proportional to the tolerance" * doctest::test_suite("long")) {
+    all_methods<b2>();
+}
 
-TEST_CASE("DETEST class C (C1): error proportional to the tolerance") { all_methods<c1>(); }
+TEST_CASE("DETEST class C (C1): error proportional to the tolerance" * doctest::test_suite("long")) {
+    all_methods<c1>();
+}
 
-TEST_CASE("DETEST class D (D1, D5): error proportional to the tolerance") {
+TEST_CASE("DETEST class D (D1, D5): error proportional to the tolerance" * doctest::test_suite("long")) {
     all_methods<d1>();
     all_methods<d5>();
 }
 
-TEST_CASE("DETEST class E (E1): error proportional to the tolerance") { all_methods<e1>(); }
+TEST_CASE("DETEST class E (E1): error proportional to the tolerance" * doctest::test_suite("long")) {
+    all_methods<e1>();
+}
 
 TEST_CASE("DETEST in float at float-sized tolerances (1e-3 .. 1e-5)") {
     float_runs<odestep::tables::dormand_prince54, a1>("DP5(4)");
