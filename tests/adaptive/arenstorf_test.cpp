@@ -14,32 +14,17 @@
 #include <string>
 
 #include "support/counting.hpp"
+#include "support/problems.hpp"
 
 namespace {
 
 using odestep::status;
 using state = std::array<double, 4>;
 
-// HNW I (0.1): y1'' = y1 + 2 y2' - mu' (y1 + mu) / D1 - mu (y1 - mu') / D2, y2'' = y2 - 2 y1' - mu' y2 / D1
-// - mu y2 / D2, D1 = ((y1 + mu)^2 + y2^2)^(3/2), D2 = ((y1 - mu')^2 + y2^2)^(3/2), mu' = 1 - mu; as a
-// first-order system in (y1, y2, y1', y2').
-struct arenstorf {
-    void operator()(double, const state& y, state& d) const noexcept {
-        const double mu = 0.012277471;
-        const double mp = 1.0 - mu;
-        double d1 = (y[0] + mu) * (y[0] + mu) + y[1] * y[1];
-        d1 *= std::sqrt(d1);
-        double d2 = (y[0] - mp) * (y[0] - mp) + y[1] * y[1];
-        d2 *= std::sqrt(d2);
-        d[0] = y[2];
-        d[1] = y[3];
-        d[2] = y[0] + 2.0 * y[3] - mp * (y[0] + mu) / d1 - mu * (y[0] - mp) / d2;
-        d[3] = y[1] - 2.0 * y[2] - mp * y[1] / d1 - mu * y[1] / d2;
-    }
-};
-
-constexpr state start{0.994, 0.0, 0.0, -2.00158510637908252240537862224};
-constexpr double period = 17.0652165601579625588917206249;
+// The orbit (tests/support/problems.hpp: HNW I (0.1) as a first-order system in (y1, y2, y1', y2')).
+using odestep_test::arenstorf;
+constexpr state start = arenstorf::start();
+constexpr double period = arenstorf::period;
 
 struct run_result {
     status s;

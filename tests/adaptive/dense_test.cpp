@@ -27,23 +27,7 @@ odestep::tolerances<State> tol(double r, double a) {
     return odestep::tolerances<State>::uniform(static_cast<T>(r), static_cast<T>(a));
 }
 
-// The restricted three-body problem of the Arenstorf orbit (HNW I, Sec. II.0, eq. (0.1), and the driver of
-// Hairer's DOPRI5/DOP853): mu = 0.012277471, y(0) = (0.994, 0, 0, -2.00158510637908252240537862224); the
-// solution is periodic with period T = 17.0652165601579625588917206249, so y(T) = y(0) is the reference.
-struct arenstorf {
-    static constexpr double mu = 0.012277471;
-    static constexpr double period = 17.0652165601579625588917206249;
-    void operator()(double, const state4& y, state4& d) const noexcept {
-        const double mu1 = 1.0 - mu;
-        const double r1 = std::pow((y[0] + mu) * (y[0] + mu) + y[1] * y[1], 1.5);
-        const double r2 = std::pow((y[0] - mu1) * (y[0] - mu1) + y[1] * y[1], 1.5);
-        d[0] = y[2];
-        d[1] = y[3];
-        d[2] = y[0] + 2.0 * y[3] - mu1 * (y[0] + mu) / r1 - mu * (y[0] - mu1) / r2;
-        d[3] = y[1] - 2.0 * y[2] - mu1 * y[1] / r1 - mu * y[1] / r2;
-    }
-    static state4 start() noexcept { return {0.994, 0.0, 0.0, -2.00158510637908252240537862224}; }
-};
+using odestep_test::arenstorf;
 
 // The error at the middle of one step of size h from the exact state at t = 0.3 (exp_sin), through the
 // engine's accepted step and its interpolant; the tolerance is loose enough that the step is accepted.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
 // The test problems more than one test uses, each with its closed-form solution (or known states) and where
-// that comes from. Every problem is a template in the value type: float, double and long double.
+// that comes from. Every problem but arenstorf is a template in the value type: float, double and long double.
 #ifndef ODESTEP_TESTS_SUPPORT_PROBLEMS_HPP
 #define ODESTEP_TESTS_SUPPORT_PROBLEMS_HPP
 
@@ -19,6 +19,29 @@ using state3 = std::array<T, 3>;
 
 // ---------------------------------------------------------------------------------------------------------
 // First-order systems y' = f(t, y)
+
+/// The restricted three-body problem of the Arenstorf orbit (HNW I, Sec. II.0, eq. (0.1); the driver of
+/// Hairer's DOPRI5): y1'' = y1 + 2 y2' - mu' (y1 + mu) / D1 - mu (y1 - mu') / D2,
+/// y2'' = y2 - 2 y1' - mu' y2 / D1 - mu y2 / D2, D1 = ((y1 + mu)^2 + y2^2)^(3/2), D2 = ((y1 - mu')^2 +
+/// y2^2)^(3/2), mu' = 1 - mu, as a first-order system in (y1, y2, y1', y2'). From start() the solution is
+/// periodic with the period below, so y(period) = y(0) is the reference. Double only (Hairer's figures).
+struct arenstorf {
+    using state = std::array<double, 4>;
+    static constexpr double mu = 0.012277471;
+    static constexpr double period = 17.0652165601579625588917206249;
+    static constexpr state start() noexcept { return {0.994, 0.0, 0.0, -2.00158510637908252240537862224}; }
+    void operator()(double, const state& y, state& d) const noexcept {
+        const double mp = 1.0 - mu;
+        double d1 = (y[0] + mu) * (y[0] + mu) + y[1] * y[1];
+        d1 *= std::sqrt(d1);
+        double d2 = (y[0] - mp) * (y[0] - mp) + y[1] * y[1];
+        d2 *= std::sqrt(d2);
+        d[0] = y[2];
+        d[1] = y[3];
+        d[2] = y[0] + 2.0 * y[3] - mp * (y[0] + mu) / d1 - mu * (y[0] - mp) / d2;
+        d[3] = y[1] - 2.0 * y[2] - mp * y[1] / d1 - mu * y[1] / d2;
+    }
+};
 
 /// A nonlinear autonomous system with a bounded closed-form solution:
 ///   y0' = y0 y1,  y1' = -y2,  y2' = y1,  y(0) = (1, 1, 0)  =>  y1 = cos t, y2 = sin t, y0 = exp(sin t)
