@@ -274,59 +274,11 @@ extern "C" __attribute__((noinline, used)) odestep::status audit_step_boris(odes
 KEPT
 } > "$newton_unit"
 
-# measure OBJECT CALLGRAPH: prints "method text stack helpers" for every audit_step_* wrapper.
+# measure OBJECT CALLGRAPH: prints "method text stack helpers" for every audit_step_* wrapper
+# (scripts/callgraph.awk).
 measure() {
-  awk -v sizes_cmd="arm-none-eabi-nm -S $1" '
-    BEGIN {
-      while ((sizes_cmd | getline line) > 0) {
-        n = split(line, field, " ")
-        if (n == 4) size[field[4]] = strtonum_hex(field[2])
-      }
-    }
-    function strtonum_hex(h,    i, c, v) {
-      v = 0
-      for (i = 1; i <= length(h); i++) { c = index("0123456789abcdef", tolower(substr(h, i, 1))) - 1; v = v * 16 + c }
-      return v
-    }
-    function title(s) { sub(/^title: "/, "", s); sub(/".*/, "", s); sub(/^[^:]*\.cpp:/, "", s); return s }
-    /^node:/ {
-      match($0, /title: "[^"]*"/); name = title(substr($0, RSTART, RLENGTH))
-      if (match($0, /[0-9]+ bytes/)) frame[name] = substr($0, RSTART, RLENGTH) + 0
-      else external[name] = 1
-      nodes[name] = 1
-    }
-    /^edge:/ {
-      match($0, /sourcename: "[^"]*"/); s = substr($0, RSTART, RLENGTH); sub(/^sourcename/, "title", s); s = title(s)
-      match($0, /targetname: "[^"]*"/); t = substr($0, RSTART, RLENGTH); sub(/^targetname/, "title", t); t = title(t)
-      if (!((s, t) in edge)) { edge[s, t] = 1; callees[s] = callees[s] " " t }
-    }
-    function deepest(f,    n, list, i, d, best) {  # largest sum of frames on a call path from f
-      if (f in memo) return memo[f]
-      best = 0
-      n = split(callees[f], list, " ")
-      for (i = 1; i <= n; i++) if (!(list[i] in external)) { d = deepest(list[i]); if (d > best) best = d }
-      memo[f] = frame[f] + best
-      return memo[f]
-    }
-    function reach(f,    n, list, i) {
-      if (f in seen) return
-      seen[f] = 1
-      if (f in external) { helpers[f] = 1; return }
-      text += size[f]
-      n = split(callees[f], list, " ")
-      for (i = 1; i <= n; i++) reach(list[i])
-    }
-    END {
-      for (wrapper in nodes) {
-        if (wrapper !~ /^audit_step_/) continue
-        delete seen; delete helpers; text = 0
-        reach(wrapper)
-        h = ""
-        for (x in helpers) h = h (h == "" ? "" : ",") x
-        m = wrapper; sub(/^audit_step_/, "", m)
-        print m, text, deepest(wrapper), (h == "" ? "-" : h)
-      }
-    }' "$2"
+  awk -v sizes_cmd="arm-none-eabi-nm -S $1" -v roots='^audit_step_' -f "$root/scripts/callgraph.awk" "$2" |
+    sed 's/^audit_step_//'
 }
 
 declare -A text_of stack_of

@@ -40,6 +40,8 @@ read -r -a cpu <<< "$(sed -n 's/^set(ODESTEP_TARGET_CPU_FLAGS "\([^"]*\)").*/\1/
 units=$(sed -n 's/^#if M4F_UNIT == \([0-9]*\).*/\1/p' bench/m4f/steppers.cpp)
 flags=("${cpu[@]}" -std=c++17 -DNDEBUG -Wall -Wextra -Wdouble-promotion -fno-exceptions -fno-rtti
        -ffunction-sections -fdata-sections -Iinclude -Ibench)
+# The rows also get their call graphs (rowK.ci), for the flash and stack of each step (scripts/callgraph.awk).
+row_flags=(-fcallgraph-info=su)
 failed=0
 touch "$dir/out-O2" "$dir/out-Os"
 for opt in -O2 -Os; do
@@ -51,12 +53,22 @@ for opt in -O2 -Os; do
   if ! arm-none-eabi-g++ "${flags[@]}" "$opt" "$@" -x c++-header bench/m4f/units.hpp \
          -o "$dir/pch$opt/m4f/units.hpp.gch" ||
      ! xargs -P "$jobs" -I{} sh -c 'exec "$@" -DM4F_UNIT={} -c bench/m4f/steppers.cpp -o "'"$objects"'/row{}.o"' \
-         sh arm-none-eabi-g++ -I"$dir/pch$opt" -Winvalid-pch "${flags[@]}" "$opt" "$@" <<< "$units" ||
+         sh arm-none-eabi-g++ -I"$dir/pch$opt" -Winvalid-pch "${flags[@]}" "${row_flags[@]}" "$opt" "$@" <<< "$units" ||
      ! arm-none-eabi-g++ "${flags[@]}" "$opt" "$@" -c bench/m4f/main.cpp -o "$objects/main.o"; then
     echo "bench-m4f: the build at $opt failed" >&2
     failed=1
     continue
   fi
+  # FLASH <-O> <unit> <odestep|hand|checked> <text> <stack>: each step function of each row (its name in namespace m4f
+  # or the row's anonymous namespace, step_...) with what it reaches in its row's object.
+  for k in $units; do
+    awk -v sizes_cmd="arm-none-eabi-nm -S $objects/row$k.o" -v roots='^_ZN(3m4f|12_GLOBAL__N_1)[0-9]+step_' \
+      -f scripts/callgraph.awk "$objects/row$k.ci" |
+      awk -v unit="$k" -v opt="$opt" '{
+        kind = $1 ~ /_hand_checked/ ? "checked" : ($1 ~ /_hand/ ? "hand" : "odestep")
+        print "FLASH\t" opt "\t" unit "\t" kind "\t" $2 "\t" $3
+      }'
+  done > "$dir/flash$opt"
   elf=$dir/steppers$opt.elf
   # The rows' objects in table order (their static registrations fill the table by index in any order).
   mapfile -t row_objects < <(for k in $units; do echo "$objects/row$k.o"; done)
@@ -106,6 +118,24 @@ table=$dir/table.md
         printf "| %s%s | %s | %s |\n", s, (s in verdict) ? " **" substr(verdict[s], 2) "**" : "", o2, os
       }
     }' "$dir/out-O2" "$dir/out-Os" 2> /dev/null
+  echo
+  echo "Flash and stack of each step (the same rows' objects, bytes of text reachable from the step function /"
+  echo "the deepest stack on a call path from it: scripts/callgraph.awk; the float oscillator's f is inlined)."
+  echo
+  echo "| stepper | -O2 odestep | hand | checked | text x hand | text x chk | -Os odestep | hand | checked | text x hand | text x chk |"
+  echo "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|"
+  sed -n 's/^#if M4F_UNIT == \([0-9]*\) *\/\/ *\(.*\)$/NAME\t\1\t\2/p' bench/m4f/steppers.cpp |
+    cat - "$dir/flash-O2" "$dir/flash-Os" |
+    awk -F'\t' '
+      function ratio(a, b) { return (a == "" || b == "" || b + 0 == 0) ? "-" : sprintf("%.2f", a / b) }
+      function cell(u, kind, o) { return ((u, kind, o) in text) ? text[u, kind, o] " / " stack[u, kind, o] : "-" }
+      function half(u, o) {
+        return sprintf("%s | %s | %s | %s | %s", cell(u, "odestep", o), cell(u, "hand", o), cell(u, "checked", o),
+                       ratio(text[u, "odestep", o], text[u, "hand", o]), ratio(text[u, "odestep", o], text[u, "checked", o]))
+      }
+      $1 == "NAME" { name[$2] = $3; order[++n] = $2; next }
+      $1 == "FLASH" { o = $2 == "-O2" ? 1 : 2; text[$3, $4, o] = $5; stack[$3, $4, o] = $6 }
+      END { for (i = 1; i <= n; i++) printf "| %s | %s | %s |\n", name[order[i]], half(order[i], 1), half(order[i], 2) }'
 } > "$table"
 echo
 cat "$table"
