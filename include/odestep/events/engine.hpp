@@ -13,12 +13,14 @@
 #include <type_traits>
 #include <utility>
 
+#include "../adaptive/dense.hpp"
 #include "../detail/ops.hpp"
 #include "../integrate.hpp"
 #include "../roots/bracket.hpp"
 #include "../state.hpp"
 #include "../status.hpp"
 #include "../stepper.hpp"
+#include "../system.hpp"
 #include "arming.hpp"
 #include "bounds.hpp"
 #include "event.hpp"
@@ -92,6 +94,18 @@ public:
     using pack = std::array<State, K>;
     using refs = std::array<State*, K>;
     using values = std::array<T, E>;
+
+    // Located on the interpolant (on_interpolant): the Hermite slopes at a pass's two ends.
+    static constexpr bool interpolates = locates_on_interpolant_v<Finder>;
+    struct hermite_slopes {
+        pack d0;             // the derivative at the pass's start (Newtonian: v and a)
+        pack d1;             // and at its end
+        bool ready = false;  // computed in this pass
+    };
+    struct no_slopes {
+        bool ready = false;
+    };
+    using slopes = std::conditional_t<interpolates, hermite_slopes, no_slopes>;
 
     std::array<event_memory<T>, E> memory{};
     bool all_armed = false;  // every event is armed: kept by rearm and fire_all, read by the quiet step's test
@@ -211,8 +225,10 @@ private:
         pack hi_state;
         pack a_state;
         pack b_state;
+        slopes d;  // (on the interpolant) the pass's slopes, computed when it first probes or locates
         // One pass per restart: the first, and one after each location whose action ran.
         for (;;) {
+            d.ready = false;
             if (partial) {
                 load(y, start);
                 s = call_step(stepper, f, y, t_s, h, seq{});
@@ -244,10 +260,8 @@ private:
                 values g_hi = g_end;
                 if (k < pieces) {
                     hi = h * static_cast<T>(k) / static_cast<T>(pieces);
-                    hi_state = start;
                     hi_refs = pointers(hi_state);
-                    reset_if_any(scratch);
-                    const status ps = call_step(scratch, f, hi_refs, t_s, hi, seq{});
+                    const status ps = state_at(scratch, f, start, y, d, t_s, hi, h, t_end, hi_state);
                     if (ps != status::ok) return fail(lo_state, at(lo), ps);
                     if (!evaluate_all(set, at(hi), hi_refs, g_hi))
                         return fail(lo_state, at(lo), status::non_finite_event);
@@ -266,7 +280,7 @@ private:
                     load(hi_refs, b_state);
                     values g_b = g_hi;
                     const status ls =
-                        locate(scratch, f, set, start, t_s, h, t_end, lo, lo_state, a, b, a_state, b_state, g_b);
+                        locate(scratch, f, set, start, y, d, t_s, h, t_end, lo, lo_state, a, b, a_state, b_state, g_b);
                     if (ls != status::ok) return fail(lo_state, at(lo), ls);
                     const T t_star = at(a);
                     const T t_b = at(b);
@@ -525,13 +539,58 @@ private:
         all_armed = all;
     }
 
+    // The state s into the pass from (t_s, start) to (t_end, y_end), into out: by re-stepping (the stepper's
+    // own state there: `trial`, a copy of the stepper, reset first, steps s from start), or on the
+    // interpolant (Hermite from start, y_end and the slopes d, which the first call of a pass computes: f at
+    // both ends; NaN or Inf there is non_finite, and the caller rolls back to the pass's start).
+    template <class Stepper, class System>
+    ODESTEP_INLINE static status state_at(Stepper& trial, System& f, const pack& start, const refs& y_end, slopes& d,
+                                          T t_s, T s, T h, T t_end, pack& out) {
+        if constexpr (interpolates) {
+            (void)trial;
+            if (ODESTEP_UNLIKELY(!d.ready)) {
+                const status sl = hermite_ends(f, start, y_end, t_s, t_end, d);
+                if (sl != status::ok) return sl;
+            }
+            const T theta = s / h;
+            for (std::size_t k = 0; k < K; ++k) hermite_cubic(start[k], d.d0[k], *y_end[k], d.d1[k], h, theta, out[k]);
+            return status::ok;
+        } else {
+            (void)d, (void)y_end, (void)h, (void)t_end;
+            out = start;
+            reset_if_any(trial);
+            return call_step(trial, f, pointers(out), t_s, s, seq{});
+        }
+    }
+
+    // The slopes at the pass's ends: f(t, y) (Newtonian: x' = v and v' = a(t, x, v)), two evaluations. Kept
+    // out of line: the rare path of the rare path.
+    template <class System>
+    ODESTEP_EVENTS_NOINLINE static status hermite_ends(System& f, const pack& start, const refs& y_end, T t_s, T t_end,
+                                                       slopes& d) {
+        if constexpr (K == 1) {
+            odestep::detail::evaluate(f, t_s, start[0], d.d0[0]);
+            odestep::detail::evaluate(f, t_end, static_cast<const State&>(*y_end[0]), d.d1[0]);
+        } else {
+            d.d0[0] = start[1];
+            d.d0[1] = acceleration(f, t_s, start[0], start[1]);
+            d.d1[0] = *y_end[1];
+            d.d1[1] =
+                acceleration(f, t_end, static_cast<const State&>(*y_end[0]), static_cast<const State&>(*y_end[1]));
+        }
+        if (!all_finite_pack(d.d0) || !all_finite_pack(d.d1)) return status::non_finite;
+        d.ready = true;
+        return status::ok;
+    }
+
     // Narrows [a, b] (the crossings between lo = a and b) to the earliest one: every event crossed by b is
     // located on [lo, b] in turn, and b only moves earlier. Re-steps go from the step's start (on `trial`,
     // a copy of the stepper, reset before each), so the event state is the integrator's own. On return [a, b]
     // brackets the earliest crossing, a_state and b_state are the states there and g_b all g at b.
     template <class Stepper, class System>
-    ODESTEP_INLINE status locate(Stepper& trial, System& f, set_type& set, const pack& start, T t_s, T h, T t_end, T lo,
-                                 const pack& lo_state, T& a, T& b, pack& a_state, pack& b_state, values& g_b) {
+    ODESTEP_INLINE status locate(Stepper& trial, System& f, set_type& set, const pack& start, const refs& y_end,
+                                 slopes& d, T t_s, T h, T t_end, T lo, const pack& lo_state, T& a, T& b, pack& a_state,
+                                 pack& b_state, values& g_b) {
         // Half the spacing of T at the step's times: a bracket that narrow, in s, has ends whose times are
         // adjacent or equal (each end rounds by at most half a spacing). (The spacing below the larger time,
         // which is the smaller one at a power of two, and never below the least subnormal.)
@@ -563,9 +622,7 @@ private:
             a_state = lo_state;
             auto fn = [&, sign_h, side, c, t_s, h, t_end](T u) -> T {  // (the scalars by value: in registers)
                 const T s_trial = sign_h * u;
-                trial_state = start;
-                reset_if_any(trial);
-                const status st = call_step(trial, f, pointers(trial_state), t_s, s_trial, seq{});
+                const status st = state_at(trial, f, start, y_end, d, t_s, s_trial, h, t_end, trial_state);
                 if (st != status::ok) {
                     failure = st;
                     return std::numeric_limits<T>::quiet_NaN();
