@@ -180,7 +180,7 @@ TEST_CASE("events on the interpolant: the published bounds are smaller and hold 
     // (1 + F)(S + 2) = 9 * 6 against S [(1 + F) + F E C] = 4 (9 + 8 * 2 * 102)
     static_assert(odestep::max_rhs_evals_per_step<rk4, interpolant>(2, limits) == 54);
     static_assert(odestep::max_rhs_evals_per_step<rk4>(2, limits) == 6564);
-    static_assert(odestep::max_rhs_evals_per_step<rk4, interpolant>(2, {0, 0, 0}) == 4);  // no location: the step
+    static_assert(odestep::max_rhs_evals_per_step<rk4, interpolant>(2, {0, 0, 0}) == 4);   // no location: the step
     static_assert(odestep::max_rhs_evals_per_step<rk4, interpolant>(1, {0, 2, 3}) == 18);  // 3 (4 + 2)
     static_assert(odestep::max_g_evals_per_step<double, interpolant>(2, limits) ==
                   odestep::max_g_evals_per_step<double>(2, limits));
@@ -189,9 +189,8 @@ TEST_CASE("events on the interpolant: the published bounds are smaller and hold 
     auto bounce = [](double, state2& s) { s[1] = -0.7 * s[1]; };
     const odestep::event_limits probing{0, 8, 2};
     auto loop = odestep::make_event_stepper(
-        rk4{},
-        odestep::watch<interpolant>(odestep::make_event<state2>(height, odestep::direction::falling, bounce))
-            .with_limits(probing));
+        rk4{}, odestep::watch<interpolant>(odestep::make_event<state2>(height, odestep::direction::falling, bounce))
+                   .with_limits(probing));
     state2 s{1.0, 0.0};
     REQUIRE(loop.start(0.0, 0.01, s) == odestep::status::ok);
     const std::size_t bound = odestep::max_rhs_evals_per_tick<rk4, interpolant>(1, probing);
