@@ -250,3 +250,32 @@ TEST_CASE("events on the interpolant: NaN from f at the slopes is non_finite wit
     CHECK(r.status == odestep::status::invalid_tolerance);
     CHECK(calls == 0);
 }
+
+TEST_CASE("event_stepper: a change of the probes takes effect at rearm, and the quiet tick then probes") {
+    // (Issue 18: the quiet tick reads the probes through the all-armed flag that rearm keeps.) y' = 1 from 0
+    // with dt = 1, g = (y - 1.3)(y - 1.7): two roots inside the second tick, g > 0 at both its ends, so only
+    // a probe (at 1.5, where g = -0.04) sees them.
+    using state1 = std::array<double, 1>;
+    auto clock = [](double, const state1&) { return state1{1.0}; };
+    auto two_roots = [](double, const state1& y) { return (y[0] - 1.3) * (y[0] - 1.7); };
+    for (bool probing : {false, true}) {
+        CAPTURE(probing);
+        auto loop = odestep::make_event_stepper(
+            odestep::rk4<state1>{},
+            odestep::watch(odestep::make_event<state1>(two_roots, odestep::direction::either, odestep::record)));
+        state1 y{0.0};
+        REQUIRE(loop.start(0.0, 1.0, y) == odestep::status::ok);
+        REQUIRE(loop.tick(clock, y).status == odestep::status::ok);
+        if (probing) {
+            loop.events().limits.probes = 1;
+            REQUIRE(loop.rearm(y) == odestep::status::ok);
+        }
+        const auto r = loop.tick(clock, y);
+        REQUIRE(r.status == odestep::status::ok);
+        CHECK(r.fired == (probing ? 2u : 0u));
+        if (probing && r.fired == 2) {  // RK4 is exact for y' = 1: the roots 1.3 and 1.7 to the bracket's width
+            CHECK(std::abs(r.firings[0].t - 1.3) <= 1e-14);
+            CHECK(std::abs(r.firings[1].t - 1.7) <= 1e-14);
+        }
+    }
+}
