@@ -124,6 +124,41 @@ struct event_limits {
 /// bracket starts next to the last root; see the README's event section for the measurement).
 using default_root_finder = brent;
 
+/// The location policy that finds an event's root on the step's interpolant instead of re-stepping:
+/// watch<odestep::on_interpolant<>>(...) (Brent), or on_interpolant<odestep::itp> for another finder. The
+/// interpolant is the cubic Hermite one through the step's ends and their slopes (hermite_cubic, order 3),
+/// for every stepper: f at the step's start and end, two evaluations (two accelerations, Newtonian) per
+/// pass of a step that has a crossing or probes, none per iteration of the finder and none in a quiet
+/// step. The event's state is then the interpolant's value, with its error (O(dt^4) locally) instead of
+/// the stepper's: see docs/events.md for the trade-off, and max_rhs_evals_per_step for the smaller bound.
+template <class Finder = brent>
+struct on_interpolant {
+    using root_finder = Finder;                           ///< the bracketing finder that narrows the root
+    static constexpr bool locates_on_interpolant = true;  ///< the event engine's switch
+    /// The finder's own worst case (see bracket.hpp).
+    template <class T>
+    static constexpr std::size_t worst_case_evaluations(T width, T tol) noexcept {
+        return Finder::worst_case_evaluations(width, tol);
+    }
+    /// The finder's narrow (see bracket.hpp).
+    template <class T, class F>
+    [[nodiscard]] ODESTEP_INLINE static constexpr root_bracket<T> narrow(F&& f, T a, T fa, T b, T fb, T tol,
+                                                                         std::size_t cap) {
+        return Finder::narrow(f, a, fa, b, fb, tol, cap);
+    }
+};
+
+namespace detail {
+// True when the event set's Finder locates on the interpolant (on_interpolant<...>).
+template <class Finder, class = void>
+struct locates_on_interpolant : std::false_type {};
+template <class Finder>
+struct locates_on_interpolant<Finder, std::void_t<decltype(Finder::locates_on_interpolant)>>
+    : std::bool_constant<Finder::locates_on_interpolant> {};
+template <class Finder>
+inline constexpr bool locates_on_interpolant_v = locates_on_interpolant<Finder>::value;
+}  // namespace detail
+
 /// The events of one run, given together (each its own type: no type erasure, no heap), the loop's limits
 /// and the root finder.
 template <class Finder, class... Events>

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <tuple>
 
 #include "../detail/grid_clock.hpp"
@@ -79,7 +80,11 @@ public:
         n_ = 0;
         lag_ = 0;
         t_now_ = clock_.time(0);  // t0 + 0 dt, as every grid time
-        clock_state_ = clock_state::on_grid;
+        // Every grid time the 64-bit counter can reach is finite when the last one is (t0 + n dt, rounded, is
+        // monotonic in n): then the quiet tick needs no test of its grid time. Otherwise (a dt or t0 near the
+        // top of T's range) every tick takes catch_up, which tests it before the step.
+        unbounded_clock_ = !detail::is_finite(clock_.time(std::numeric_limits<std::uint64_t>::max()));
+        clock_state_ = unbounded_clock_ ? clock_state::behind : clock_state::on_grid;
         return status::ok;
     }
 
@@ -120,10 +125,9 @@ public:
         typename engine_type::pack start;
         r.status = engine_type::step(stepper_, f, ptrs, t_now_, clock_.dt, start);
         if (ODESTEP_UNLIKELY(r.status != status::ok)) return r;  // y untouched, at t_now_
-        const T t_end = grid_time();
+        const T t_end = grid_time();  // finite: an unbounded clock never takes this path (see start)
         typename engine_type::values g;
-        if (ODESTEP_UNLIKELY(!detail::is_finite(t_end) || !engine_.settle(set_, ptrs, t_end, g)))
-            return rest(f, ptrs, start, g, t_end);
+        if (ODESTEP_UNLIKELY(!engine_.settle(set_, ptrs, t_end, g))) return rest(f, ptrs, start, g, t_end);
         ++n_;
         t_now_ = t_end;
         r.t = t_end;
@@ -141,7 +145,8 @@ public:
     constexpr std::size_t firings(std::size_t i) const noexcept { return engine_.memory[i].fired; }
     /// The stepper, as the loop keeps it.
     Stepper& stepper() noexcept { return stepper_; }
-    /// The events and their limits (changed limits are checked by the next rearm).
+    /// The events and their limits (changed limits are checked by the next rearm, and a change of the probes
+    /// takes effect there).
     Set& events() noexcept { return set_; }
 
 private:
@@ -160,31 +165,25 @@ private:
         return !(s == status::ok || s == status::stopped_by_event || s == status::event_limit);
     }
 
-    // The quiet tick's step needs more than settle: a crossing (or probes, or a NaN from g), or a grid time
-    // that overflowed (then the step is undone: status::invalid_time, nothing else changes).
+    // The quiet tick's step needs more than settle: a crossing (or probes, or a NaN from g).
     template <class System>
-    ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> rest(System& f, const ptrs_type& ptrs,
+    // (ptrs and g by value: in registers where they fit, instead of spilled to the quiet tick's frame.)
+    ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> rest(System& f, const ptrs_type ptrs,
                                                           typename engine_type::pack& start,
-                                                          const typename engine_type::values& g, T t_end) {
+                                                          const typename engine_type::values g, T t_end) {
         tick_result<T, Capacity> r;
         r.status = status::ok;
         r.t = t_now_;
         r.fired = 0;
         r.event = no_event;
-        if (!detail::is_finite(t_end)) {
-            for (std::size_t k = 0; k < arity; ++k) *ptrs[k] = start[k];
-            detail::reset_if_any(stepper_);
-            r.status = status::invalid_time;
-            return r;
-        }
         const std::uint64_t target = n_ + 1;
         finish_piece(f, ptrs, start, g, t_now_, clock_.dt, t_end, r);
         account(r, target);
         return r;
     }
 
-    // A tick off the quiet path: before start, or after a tick that ended early (or failed inside its
-    // period). Up to two pieces, each to the next grid time: the rest of an earlier period, then this one's.
+    // A tick off the quiet path: before start, after a tick that ended early (or failed inside its period),
+    // or every tick of an unbounded clock (its grid time is tested here). Up to two pieces, each to the next grid time: the rest of an earlier period, then this one's.
     template <class System>
     ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> catch_up(System& f, const ptrs_type& ptrs) {
         tick_result<T, Capacity> r;
@@ -262,11 +261,11 @@ private:
     void account(const tick_result<T, Capacity>& r, std::uint64_t target) noexcept {
         const std::uint64_t counted = is_error(r.status) ? target - 1 : target;
         lag_ = counted > n_ ? counted - n_ : 0;
-        clock_state_ = lag_ == 0 && !off_grid_ ? clock_state::on_grid : clock_state::behind;
+        clock_state_ = lag_ == 0 && !off_grid_ && !unbounded_clock_ ? clock_state::on_grid : clock_state::behind;
     }
 
     // idle: before start; on_grid: the state is at t0 + n dt and no period is owed; behind: the state is off
-    // the grid (a tick stopped inside its period) or periods are owed (lag_).
+    // the grid (a tick stopped inside its period), periods are owed (lag_), or the clock is unbounded.
     enum class clock_state : unsigned char { idle, on_grid, behind };
 
     Stepper stepper_;
@@ -278,7 +277,8 @@ private:
                              // wraps after 49.7 days)
     std::uint64_t lag_ = 0;  // periods counted beyond n_ (after ticks that ended early)
     clock_state clock_state_ = clock_state::idle;
-    bool off_grid_ = false;  // the state is between t0 + n dt and t0 + (n+1) dt
+    bool off_grid_ = false;         // the state is between t0 + n dt and t0 + (n+1) dt
+    bool unbounded_clock_ = false;  // some grid time the counter can reach is not finite: every tick in catch_up
 };
 
 /// make_event_stepper(stepper, watch(...)) with the default capacity; make_event_stepper<16>(...) lists up
