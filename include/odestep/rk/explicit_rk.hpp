@@ -89,12 +89,19 @@ constexpr factored_weights<T, S> factor_weights(const std::array<T, S>& w) noexc
 /// instruction, and a stage that nothing reads is never evaluated (Dormand-Prince's seventh stage costs
 /// nothing unless the error estimate is asked for). The stepper holds no state: the stage derivatives
 /// live on the stack of one `step` call, (stages + 2) states at most.
-template <class Method, class State>
+///
+/// Check (odestep::checked, the default, or odestep::unchecked): whether the step tests its results for
+/// NaN and Inf (and returns `status::non_finite` with y untouched) or writes them as they come. The
+/// arithmetic is the same in both.
+template <class Method, class State, class Check = checked>
 class explicit_rk : public stepper_defaults<State> {
 public:
     using state_type = State;                ///< the state, std::array<T, N> or a user type
     using value_type = value_type_t<State>;  ///< T, the scalar type of the state and the table
     using method_type = Method;              ///< the table's type (odestep::tables)
+    using check_type = Check;                ///< the check policy: odestep::checked or odestep::unchecked
+    /// The step tests its results for NaN and Inf (trait; see odestep::stepper_defaults).
+    static constexpr bool checks_finiteness = Check::checks_finiteness;
 
 private:
     using T = value_type;
@@ -156,29 +163,32 @@ public:
     /// The order of the (first) embedded method, 0 without one.
     static constexpr int embedded_order = E > 0 ? tab.embedded_order[0] : 0;
 
-    /// y <- y(t + dt). On `status::non_finite` y is left as it was.
+    /// y <- y(t + dt). Checked: on `status::non_finite` y is left as it was. Unchecked: always `ok`.
     template <class System>
     ODESTEP_STEP_FLATTEN [[nodiscard]] status step(System&& f, State& y, T t, T dt) const {
         std::array<State, S> k;  // not zeroed: every stage the step reads is written first
         State next;
         run_stages<false>(f, y, t, dt, k, next, std::make_index_sequence<S>{});
         constexpr std::size_t estimates = 0;
+        constexpr bool in_place = !checks_finiteness && !next_from_stage<false>;
+        State& out = target<in_place>(next, y);
         T total = -T(0);  // x + (-0) is x, exactly: the compiler drops that first addition
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
-            if constexpr (!next_from_stage<false>) next[n] = y[n] + sum<b_weights>(k, n, dt);
+            if constexpr (!next_from_stage<false>) out[n] = y[n] + sum<b_weights>(k, n, dt);
             if constexpr (fused_total) {
                 total += next[n];
                 add_stage_components<estimates>(total, k, n);
             }
         }
-        if constexpr (!fused_total) {
+        if constexpr (separate_total) {
             add_all(total, next);
             add_stages<estimates>(total, k);
         }
-        if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) && !(detail::each_finite(next) && stages_finite<estimates>(k)))
+        if (ODESTEP_UNLIKELY(!detail::finite_sum_under<Check>(total)) &&
+            !(detail::each_finite(next) && stages_finite<estimates>(k)))
             return status::non_finite;
-        detail::assign<detail::copy_form::block_at_size>(y, next);
+        if constexpr (!in_place) detail::assign<detail::copy_form::block_at_size>(y, next);
         return status::ok;
     }
 
@@ -191,27 +201,30 @@ public:
         State next;
         run_stages<true>(f, y, t, dt, k, next, std::make_index_sequence<S>{});
         constexpr std::size_t estimates = 1;
+        constexpr bool in_place = !checks_finiteness && !next_from_stage<true>;
+        State& out = target<in_place>(next, y);
         State err;
+        State& err_out = target<!checks_finiteness>(err, error);
         T total = -T(0);
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
-            if constexpr (!next_from_stage<true>) next[n] = y[n] + sum<b_weights>(k, n, dt);
-            err[n] = sum<error_weights<0>>(k, n, dt);
+            if constexpr (!next_from_stage<true>) out[n] = y[n] + sum<b_weights>(k, n, dt);
+            err_out[n] = sum<error_weights<0>>(k, n, dt);
             if constexpr (fused_total) {
                 total += next[n] + err[n];
                 add_stage_components<estimates>(total, k, n);
             }
         }
-        if constexpr (!fused_total) {
+        if constexpr (separate_total) {
             add_all(total, next);
             add_all(total, err);
             add_stages<estimates>(total, k);
         }
-        if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) &&
+        if (ODESTEP_UNLIKELY(!detail::finite_sum_under<Check>(total)) &&
             !(detail::each_finite(next) && detail::each_finite(err) && stages_finite<estimates>(k)))
             return status::non_finite;
-        detail::assign<detail::copy_form::block_at_size>(y, next);
-        detail::assign<detail::copy_form::block_at_size>(error, err);
+        if constexpr (!in_place) detail::assign<detail::copy_form::block_at_size>(y, next);
+        if constexpr (checks_finiteness) detail::assign<detail::copy_form::block_at_size>(error, err);
         return status::ok;
     }
 
@@ -223,31 +236,38 @@ public:
         State next;
         run_stages<true>(f, y, t, dt, k, next, std::make_index_sequence<S>{});
         constexpr std::size_t estimates = 2;
+        constexpr bool in_place = !checks_finiteness && !next_from_stage<true>;
+        State& out = target<in_place>(next, y);
         State err;
         State err2;
+        State& err_out = target<!checks_finiteness>(err, error);
+        State& err2_out = target<!checks_finiteness>(err2, error2);
         T total = -T(0);
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
-            if constexpr (!next_from_stage<true>) next[n] = y[n] + sum<b_weights>(k, n, dt);
-            err[n] = sum<error_weights<0>>(k, n, dt);
-            err2[n] = sum<error_weights<1>>(k, n, dt);
+            if constexpr (!next_from_stage<true>) out[n] = y[n] + sum<b_weights>(k, n, dt);
+            err_out[n] = sum<error_weights<0>>(k, n, dt);
+            err2_out[n] = sum<error_weights<1>>(k, n, dt);
             if constexpr (fused_total) {
                 total += next[n] + err[n] + err2[n];
                 add_stage_components<estimates>(total, k, n);
             }
         }
-        if constexpr (!fused_total) {
+        if constexpr (separate_total) {
             add_all(total, next);
             add_all(total, err);
             add_all(total, err2);
             add_stages<estimates>(total, k);
         }
-        if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) && !(detail::each_finite(next) && detail::each_finite(err) &&
-                                                              detail::each_finite(err2) && stages_finite<estimates>(k)))
+        if (ODESTEP_UNLIKELY(!detail::finite_sum_under<Check>(total)) &&
+            !(detail::each_finite(next) && detail::each_finite(err) && detail::each_finite(err2) &&
+              stages_finite<estimates>(k)))
             return status::non_finite;
-        detail::assign<detail::copy_form::block_at_size>(y, next);
-        detail::assign<detail::copy_form::block_at_size>(error, err);
-        detail::assign<detail::copy_form::block_at_size>(error2, err2);
+        if constexpr (!in_place) detail::assign<detail::copy_form::block_at_size>(y, next);
+        if constexpr (checks_finiteness) {
+            detail::assign<detail::copy_form::block_at_size>(error, err);
+            detail::assign<detail::copy_form::block_at_size>(error2, err2);
+        }
         return status::ok;
     }
 
@@ -256,8 +276,19 @@ private:
 
     // The finiteness test's sum (detail::finite_sum) of the new state, and of the estimates. Optimizing for
     // size, it is accumulated in the loop that computes them (one loop, not two); otherwise after that
-    // loop, which leaves it free to be vectorized.
-    static constexpr bool fused_total = detail::optimizing_for_size;
+    // loop, which leaves it free to be vectorized. Unchecked: no sum.
+    static constexpr bool fused_total = checks_finiteness && detail::optimizing_for_size;
+    static constexpr bool separate_total = checks_finiteness && !detail::optimizing_for_size;
+    // Where a result is computed: the caller's object itself (InPlace: unchecked, nothing to roll back), or a
+    // local copied to it after the test.
+    template <bool InPlace>
+    ODESTEP_INLINE static State& target(State& local, State& caller) noexcept {
+        if constexpr (InPlace) {
+            return caller;
+        } else {
+            return local;
+        }
+    }
     ODESTEP_INLINE static void add_all(T& total, const State& v) noexcept {
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) total += v[n];
@@ -439,36 +470,36 @@ private:
 
 // The named steppers. A pair steps as a method of its higher order; its error-estimating `step` overload
 // returns the difference to the embedded solution.
-template <class State>
-using euler = explicit_rk<tables::euler, State>;
-template <class State>
-using midpoint = explicit_rk<tables::midpoint, State>;
-template <class State>
-using euler_richardson = explicit_rk<tables::midpoint, State>;
-template <class State>
-using heun = explicit_rk<tables::heun, State>;
-template <class State>
-using ralston2 = explicit_rk<tables::ralston2, State>;
-template <class State>
-using kutta3 = explicit_rk<tables::kutta3, State>;
-template <class State>
-using ssprk3 = explicit_rk<tables::ssprk3, State>;
-template <class State>
-using rk4 = explicit_rk<tables::rk4, State>;
-template <class State>
-using rk38 = explicit_rk<tables::rk38, State>;
-template <class State>
-using bogacki_shampine32 = explicit_rk<tables::bogacki_shampine32, State>;
-template <class State>
-using fehlberg45 = explicit_rk<tables::fehlberg45, State>;
-template <class State>
-using cash_karp54 = explicit_rk<tables::cash_karp54, State>;
-template <class State>
-using dormand_prince54 = explicit_rk<tables::dormand_prince54, State>;
-template <class State>
-using fehlberg78 = explicit_rk<tables::fehlberg78, State>;
-template <class State>
-using dop853 = explicit_rk<tables::dop853, State>;
+template <class State, class Check = checked>
+using euler = explicit_rk<tables::euler, State, Check>;
+template <class State, class Check = checked>
+using midpoint = explicit_rk<tables::midpoint, State, Check>;
+template <class State, class Check = checked>
+using euler_richardson = explicit_rk<tables::midpoint, State, Check>;
+template <class State, class Check = checked>
+using heun = explicit_rk<tables::heun, State, Check>;
+template <class State, class Check = checked>
+using ralston2 = explicit_rk<tables::ralston2, State, Check>;
+template <class State, class Check = checked>
+using kutta3 = explicit_rk<tables::kutta3, State, Check>;
+template <class State, class Check = checked>
+using ssprk3 = explicit_rk<tables::ssprk3, State, Check>;
+template <class State, class Check = checked>
+using rk4 = explicit_rk<tables::rk4, State, Check>;
+template <class State, class Check = checked>
+using rk38 = explicit_rk<tables::rk38, State, Check>;
+template <class State, class Check = checked>
+using bogacki_shampine32 = explicit_rk<tables::bogacki_shampine32, State, Check>;
+template <class State, class Check = checked>
+using fehlberg45 = explicit_rk<tables::fehlberg45, State, Check>;
+template <class State, class Check = checked>
+using cash_karp54 = explicit_rk<tables::cash_karp54, State, Check>;
+template <class State, class Check = checked>
+using dormand_prince54 = explicit_rk<tables::dormand_prince54, State, Check>;
+template <class State, class Check = checked>
+using fehlberg78 = explicit_rk<tables::fehlberg78, State, Check>;
+template <class State, class Check = checked>
+using dop853 = explicit_rk<tables::dop853, State, Check>;
 
 }  // namespace odestep
 
