@@ -102,8 +102,7 @@ void rk_nan() {
     if constexpr (odestep::explicit_rk<M, S>::error_estimates >= 1) {
         S e{};
         b = y0;
-        CHECK(odestep::explicit_rk<M, S, odestep::unchecked>{}.step(f, b, T(0), T(0.03125), e) ==
-              odestep::status::ok);
+        CHECK(odestep::explicit_rk<M, S, odestep::unchecked>{}.step(f, b, T(0), T(0.03125), e) == odestep::status::ok);
         CHECK(all_nan(b));
     }
 }
@@ -119,8 +118,8 @@ TEST_CASE("unchecked: explicit Runge-Kutta, every table, the checked form's bits
     // And the arithmetic itself, from the closed form: Euler on y' = -y with dt = 1/8 gives y_1 = 7/8 exactly.
     std::array<double, 1> y{1.0};
     REQUIRE(odestep::euler<std::array<double, 1>, odestep::unchecked>{}.step(
-                [](double, const std::array<double, 1>& x) { return std::array<double, 1>{-x[0]}; }, y, 0.0,
-                0.125) == odestep::status::ok);
+                [](double, const std::array<double, 1>& x) { return std::array<double, 1>{-x[0]}; }, y, 0.0, 0.125) ==
+            odestep::status::ok);
     CHECK(y[0] == 0.875);
 }
 
@@ -241,4 +240,53 @@ TEST_CASE("unchecked: velocity Verlet with the acceleration kept by the caller")
     CHECK(same_bits(va, v_before));
     CHECK(unchecked.step(a, xb, vb, acc_b, 0.0, dt) == odestep::status::ok);
     CHECK(std::isnan(vb[0]));
+}
+
+namespace {
+
+// The classic Newtonian steppers (newtonian/classic.hpp), checked and unchecked side by side on a force of
+// position alone (every one of them takes it), then a NaN force.
+template <template <class, class> class Stepper>
+void classic_same_bits_and_nan() {
+    Stepper<d2, odestep::checked> checked;
+    Stepper<d2, odestep::unchecked> unchecked;
+    static_assert(checked.checks_finiteness && !unchecked.checks_finiteness);
+    bool poisoned = false;
+    auto a = [&poisoned](double, const d2& x) {
+        if (poisoned) return d2{std::nan(""), std::nan("")};
+        return d2{-x[0] - 0.1 * x[0] * x[0] * x[0], -x[1]};
+    };
+    const double dt = 0.03125;
+    d2 xa{1.0, 0.5};
+    d2 va{0.0, -0.25};
+    d2 xb = xa;
+    d2 vb = va;
+    for (int i = 0; i < 40; ++i) {
+        REQUIRE(checked.step(a, xa, va, i * dt, dt) == odestep::status::ok);
+        REQUIRE(unchecked.step(a, xb, vb, i * dt, dt) == odestep::status::ok);
+        REQUIRE(same_bits(xa, xb));
+        REQUIRE(same_bits(va, vb));
+    }
+    poisoned = true;
+    const d2 x_before = xa;
+    const d2 v_before = va;
+    CHECK(checked.step(a, xa, va, 40 * dt, dt) == odestep::status::non_finite);
+    CHECK(same_bits(xa, x_before));
+    CHECK(same_bits(va, v_before));
+    CHECK(unchecked.step(a, xb, vb, 40 * dt, dt) == odestep::status::ok);
+    CHECK(all_nan(vb));  // every one of them forms the new v from the NaN force
+}
+
+}  // namespace
+
+TEST_CASE("unchecked: the classic Newtonian steppers, the checked form's bits; a NaN from the force") {
+    classic_same_bits_and_nan<odestep::newtonian_euler>();
+    classic_same_bits_and_nan<odestep::newtonian_midpoint>();
+    classic_same_bits_and_nan<odestep::newtonian_euler_richardson>();
+    classic_same_bits_and_nan<odestep::half_step>();
+    classic_same_bits_and_nan<odestep::leapfrog_position_form>();
+    classic_same_bits_and_nan<odestep::beeman>();
+    // The predictor-corrector too: with a NaN force its change and size (maxima that skip a NaN) stay 0, so
+    // the unchecked iteration "converges" on the NaN state at once and returns ok.
+    classic_same_bits_and_nan<odestep::predictor_corrector>();
 }

@@ -140,15 +140,15 @@ private:
     // where a NaN need not survive (an f that ignores its input: a forcing f(t), a switch, a saturation), so
     // its value is added to the finiteness test itself. A stage with a non-zero weight needs nothing more:
     // w NaN and w Inf are not finite, and neither is a sum with such a term.
-    static constexpr std::array<bool, S> unchecked_stages(bool with_error, std::size_t estimates) noexcept {
+    static constexpr std::array<bool, S> unweighted_stages(bool with_error, std::size_t estimates) noexcept {
         const std::array<bool, S> evaluated = needed_stages(with_error);
-        std::array<bool, S> unchecked{};
+        std::array<bool, S> unweighted{};
         for (std::size_t i = 0; i < S; ++i) {
             bool reached = tab.b[i] != T(0);
             for (std::size_t e = 0; e < estimates && e < E; ++e) reached = reached || tab.b[i] != tab.bhat[e][i];
-            unchecked[i] = evaluated[i] && !reached;
+            unweighted[i] = evaluated[i] && !reached;
         }
-        return unchecked;
+        return unweighted;
     }
 
 public:
@@ -293,12 +293,12 @@ private:
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) total += v[n];
     }
-    // The unchecked stages' values (unchecked_stages) in the finiteness test of a step that returns
+    // The unweighted stages' values (unweighted_stages) in the finiteness test of a step that returns
     // Estimates estimates: their components added to the sum, component n (in the fused loop) or all of
     // them, and the exact test of the slow path. Expanded at compile time: for a table whose weights are
     // all non-zero the set is empty and nothing is emitted.
     template <std::size_t Estimates>
-    static constexpr std::array<bool, S> unchecked = unchecked_stages(Estimates > 0, Estimates);
+    static constexpr std::array<bool, S> unweighted = unweighted_stages(Estimates > 0, Estimates);
     template <std::size_t Estimates>
     ODESTEP_INLINE static void add_stage_components(T& total, const std::array<State, S>& k, std::size_t n) noexcept {
         add_stage_components<Estimates>(total, k, n, std::make_index_sequence<S>{});
@@ -306,7 +306,7 @@ private:
     template <std::size_t Estimates, std::size_t... I>
     ODESTEP_INLINE static void add_stage_components(T& total, const std::array<State, S>& k, std::size_t n,
                                                     std::index_sequence<I...>) noexcept {
-        ((unchecked<Estimates>[I] ? void(total += k[I][n]) : void()), ...);
+        ((unweighted<Estimates>[I] ? void(total += k[I][n]) : void()), ...);
     }
     template <std::size_t Estimates>
     ODESTEP_INLINE static void add_stages(T& total, const std::array<State, S>& k) noexcept {
@@ -319,7 +319,7 @@ private:
     }
     template <std::size_t Estimates, std::size_t... I>
     ODESTEP_INLINE static bool stages_finite(const std::array<State, S>& k, std::index_sequence<I...>) noexcept {
-        return ((!unchecked<Estimates>[I] || detail::each_finite(k[I])) && ...);
+        return ((!unweighted<Estimates>[I] || detail::each_finite(k[I])) && ...);
     }
 
     // Weight rows as types, so that each weight is a constant expression inside `sum`.
