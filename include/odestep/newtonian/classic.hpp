@@ -21,15 +21,9 @@ namespace odestep {
 /// The trait set of the Newtonian steppers below (stepper_defaults with system_form::newtonian). Evals is
 /// the most one step can cost (the first step of a history-keeping method, or the corrector's cap);
 /// VelocityForces, whether a(t, x, v) is accepted.
-/// Check, the check policy of every stepper below (odestep::checked, the default, or odestep::unchecked: the
-/// same arithmetic without the NaN/Inf test).
 template <class State, int Order, std::size_t Stages, std::size_t Evals, bool Symplectic, bool Reversible,
-          bool VelocityForces, class Check = checked>
+          bool VelocityForces>
 struct newtonian_traits : stepper_defaults<State> {
-    /// The check policy: odestep::checked (the default) or odestep::unchecked (no NaN/Inf test).
-    using check_type = Check;
-    /// The step tests its results for NaN and Inf (trait; see odestep::stepper_defaults).
-    static constexpr bool checks_finiteness = Check::checks_finiteness;
     /// The order of the global error (trait; see odestep::stepper_defaults).
     static constexpr int order = Order;
     /// Stages per step (trait; see odestep::stepper_defaults).
@@ -50,10 +44,10 @@ struct newtonian_traits : stepper_defaults<State> {
 
 /// Euler for Newton's equations: x_{n+1} = x_n + v_n dt, v_{n+1} = v_n + a(t_n, x_n, v_n) dt.
 /// Order 1; on the oscillator its energy grows by exactly (1 + dt^2) per step.
-template <class State, class Check = checked>
-class newtonian_euler : public newtonian_traits<State, 1, 1, 1, false, false, true, Check> {
+template <class State>
+class newtonian_euler : public newtonian_traits<State, 1, 1, 1, false, false, true> {
 public:
-    using typename newtonian_traits<State, 1, 1, 1, false, false, true, Check>::value_type;
+    using typename newtonian_traits<State, 1, 1, 1, false, false, true>::value_type;
 
     /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
@@ -61,7 +55,7 @@ public:
         const State acc = detail::acceleration(a, t, x, v);
         const State x1 = detail::plus_scaled(x, dt, v);    // x_{n+1} = x_n + v_n dt
         const State v1 = detail::plus_scaled(v, dt, acc);  // v_{n+1} = v_n + a_n dt
-        if (!detail::all_finite_under<Check>(x1, v1)) return status::non_finite;
+        if (!detail::all_finite(x1, v1)) return status::non_finite;
         x = x1;
         v = v1;
         return status::ok;
@@ -70,10 +64,10 @@ public:
 
 /// The midpoint algorithm: v_{n+1} = v_n + a_n dt, x_{n+1} = x_n + (v_n + v_{n+1}) dt / 2
 /// (so x_{n+1} = x_n + v_n dt + a_n dt^2 / 2). Globally first order, like Euler, in v.
-template <class State, class Check = checked>
-class newtonian_midpoint : public newtonian_traits<State, 1, 1, 1, false, false, true, Check> {
+template <class State>
+class newtonian_midpoint : public newtonian_traits<State, 1, 1, 1, false, false, true> {
 public:
-    using typename newtonian_traits<State, 1, 1, 1, false, false, true, Check>::value_type;
+    using typename newtonian_traits<State, 1, 1, 1, false, false, true>::value_type;
 
     /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
@@ -88,7 +82,7 @@ public:
             v1[n] = v[n] + acc[n] * dt;
             x1[n] = x[n] + (v[n] + v1[n]) * half;
         }
-        if (!detail::all_finite_under<Check>(x1, v1)) return status::non_finite;
+        if (!detail::all_finite(x1, v1)) return status::non_finite;
         x = x1;
         v = v1;
         return status::ok;
@@ -100,10 +94,10 @@ public:
 ///   v_{n+1} = v + a_mid dt, x_{n+1} = x + v_mid dt.
 /// Its error estimate is the difference to the Euler step of the same start: x: a_n dt^2 / 2,
 /// v: (a_mid - a_n) dt.
-template <class State, class Check = checked>
-class newtonian_euler_richardson : public newtonian_traits<State, 2, 2, 2, false, false, true, Check> {
+template <class State>
+class newtonian_euler_richardson : public newtonian_traits<State, 2, 2, 2, false, false, true> {
 public:
-    using typename newtonian_traits<State, 2, 2, 2, false, false, true, Check>::value_type;
+    using typename newtonian_traits<State, 2, 2, 2, false, false, true>::value_type;
     /// The order of the embedded solution (trait; see odestep::stepper_defaults).
     static constexpr int embedded_order = 1;
     /// The most evaluations of the estimating step (trait; see odestep::stepper_defaults).
@@ -148,7 +142,7 @@ private:
         }
         // Every value the step returns: ex = a0 dt^2 / 2 can overflow while x1 = x + v_mid dt stays finite
         // (v cancelling a0 dt / 2 in v_mid), so it is tested in its own right.
-        if (!detail::all_finite_under<Check>(x1, v1, ex, ev)) return status::non_finite;
+        if (!detail::all_finite(x1, v1, ex, ev)) return status::non_finite;
         x = x1;
         v = v1;
         error_x = ex;
@@ -163,10 +157,10 @@ private:
 /// v_{n+1} = v_{n+1/2} + a_{n+1} dt/2, with a_{n+1} evaluated once and reused as the next step's a_n, so a
 /// step costs one evaluation (two on the first step). A step that does not continue the last one (another
 /// t, dt or position object) self-starts again; after changing x or v in place, call reset().
-template <class State, class Check = checked>
-class half_step : public newtonian_traits<State, 2, 1, 2, true, true, false, Check> {
+template <class State>
+class half_step : public newtonian_traits<State, 2, 1, 2, true, true, false> {
 public:
-    using typename newtonian_traits<State, 2, 1, 2, true, true, false, Check>::value_type;
+    using typename newtonian_traits<State, 2, 1, 2, true, true, false>::value_type;
 
     /// Forgets the history: the next step starts afresh (call it after changing x or v yourself).
     constexpr void reset() noexcept { next_.clear(); }
@@ -188,7 +182,7 @@ public:
         const State v1 = detail::plus_scaled(v_half, half, a1);  // v_{n+1} = v_{n+1/2} + a_{n+1} dt/2
         // a1 and v_half need no test of their own: v1 = v_half + a1 dt/2 and x1 = x + v_half dt are +-Inf or
         // NaN when they are (0 Inf is NaN, for dt = 0 too).
-        if (!detail::all_finite_under<Check>(x1, v1)) return status::non_finite;
+        if (!detail::all_finite(x1, v1)) return status::non_finite;
         x = x1;
         v = v1;
         v_half_ = v_half;
@@ -207,10 +201,10 @@ private:
 ///   x_{n+1} = 2 x_n - x_{n-1} + a_n dt^2,   v_n = (x_{n+1} - x_{n-1}) / (2 dt),
 /// self-started with x_1 = x_0 + v_0 dt + a_0 dt^2 / 2. To give v at the new time, each step also forms
 /// x_{n+2} from a_{n+1}, which it keeps as the next step's a_n: one evaluation per step (two on the first).
-template <class State, class Check = checked>
-class leapfrog_position_form : public newtonian_traits<State, 2, 1, 2, true, true, false, Check> {
+template <class State>
+class leapfrog_position_form : public newtonian_traits<State, 2, 1, 2, true, true, false> {
 public:
-    using typename newtonian_traits<State, 2, 1, 2, true, true, false, Check>::value_type;
+    using typename newtonian_traits<State, 2, 1, 2, true, true, false>::value_type;
 
     /// Forgets the history: the next step starts afresh (call it after changing x or v yourself).
     constexpr void reset() noexcept { next_.clear(); }
@@ -238,7 +232,7 @@ public:
             const T x2 = T(2) * x1[n] - x[n] + a1[n] * dt2;  // x_{n+2}
             v1[n] = (x2 - x[n]) / two_dt;                    // v_{n+1} = (x_{n+2} - x_n) / (2 dt)
         }
-        if (!detail::all_finite_under<Check>(x1, v1)) return status::non_finite;
+        if (!detail::all_finite(x1, v1)) return status::non_finite;
         x_prev_ = x;
         x = x1;
         v = v1;
@@ -268,10 +262,10 @@ private:
 ///   `history{}` (started false) makes the next step a self-starting one; assign `history{}` again after
 ///   changing x or v outside the stepper, the force, or dt. This step is const: one stepper serves any
 ///   number of states.
-template <class State, class Check = checked>
-class beeman : public newtonian_traits<State, 2, 1, 2, false, false, true, Check> {
+template <class State>
+class beeman : public newtonian_traits<State, 2, 1, 2, false, false, true> {
 public:
-    using typename newtonian_traits<State, 2, 1, 2, false, false, true, Check>::value_type;
+    using typename newtonian_traits<State, 2, 1, 2, false, false, true>::value_type;
 
     /// What the caller-kept form keeps between steps. On status::ok, acc is a(t + dt, x) of the new x and
     /// acc_prev the acc it had on entry (or a(t, x) after a self-starting step), and started is true; on
@@ -338,7 +332,7 @@ private:
             for (std::size_t n = 0; n < v1.size(); ++n) v1[n] = v[n] + (a0[n] + a1[n]) * (dt / T(2));
         }
         // a1 needs no test of its own: v1 is +-Inf or NaN when it is (0 Inf is NaN, for dt = 0 too).
-        if (!detail::all_finite_under<Check>(x1, v1)) return status::non_finite;
+        if (!detail::all_finite(x1, v1)) return status::non_finite;
         x = x1;
         v = v1;
         a_prev = a0;
@@ -354,10 +348,10 @@ private:
 /// times; past the cap, status::no_convergence and the step is rolled back. Self-started with the Taylor
 /// prediction x_p = x_0 + v_0 dt + a_0 dt^2 / 2. Accepts velocity-dependent forces (v_p starts as
 /// v_n + a_n dt).
-template <class State, class Check = checked>
-class predictor_corrector : public newtonian_traits<State, 2, 2, 1 + 16, false, false, true, Check> {
+template <class State>
+class predictor_corrector : public newtonian_traits<State, 2, 2, 1 + 16, false, false, true> {
 public:
-    using typename newtonian_traits<State, 2, 2, 1 + 16, false, false, true, Check>::value_type;
+    using typename newtonian_traits<State, 2, 2, 1 + 16, false, false, true>::value_type;
     static constexpr int max_iterations = 16;  ///< the corrector's cap: rhs_evals_per_step = 1 + max_iterations
 
     /// Relative tolerance of the corrector iteration, in units of the state's magnitude.
@@ -406,7 +400,7 @@ public:
                     change, detail::max_value(detail::abs_value(x1[n] - xp[n]), detail::abs_value(v1[n] - vp[n])));
                 size = detail::max_value(size, detail::max_value(detail::abs_value(x1[n]), detail::abs_value(v1[n])));
             }
-            if (!detail::all_finite_under<Check>(x1, v1)) return status::non_finite;
+            if (!detail::all_finite(x1, v1)) return status::non_finite;
             xp = x1;
             vp = v1;
             if (change <= tolerance * size) {
