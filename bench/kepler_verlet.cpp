@@ -40,7 +40,7 @@ BENCH_STEP int bench_step_kepler_verlet_odestep(State& y, State&, double t, doub
 }
 BENCH_STEP int bench_step_kepler_verlet_odestep_unchecked(State& y, State&, double t, double dt) {
     return static_cast<int>(
-        odestep::velocity_verlet<vec, odestep::unchecked>{}.step(force, y.first, y.second, unchecked_acc, t, dt));
+        odestep::unchecked_t<odestep::velocity_verlet<vec>>{}.step(force, y.first, y.second, unchecked_acc, t, dt));
 }
 BENCH_STEP int bench_step_kepler_verlet_odestep_kept(State& y, State&, double t, double dt) {
     return static_cast<int>(odestep_vv.step(force, y.first, y.second, t, dt));
@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
          {"odestep_kept", "the same stepper's step(a, x, v, t, dt), acc kept and checked by the stepper",
           bench_step_kepler_verlet_odestep_kept, true, start_odestep_kept},
          {"odestep_unchecked",
-          "odestep::velocity_verlet<.., odestep::unchecked> step(a, x, v, acc, t, dt): no NaN/Inf test (the same "
+          "odestep::unchecked_t<odestep::velocity_verlet<..>> step(a, x, v, acc, t, dt): no NaN/Inf test (the same "
           "arithmetic)",
           bench_step_kepler_verlet_odestep_unchecked, true, start_odestep_unchecked},
          {"hand", "hand-written velocity Verlet loop, acceleration kept", bench_step_kepler_verlet_hand, true,

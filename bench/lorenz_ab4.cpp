@@ -25,7 +25,7 @@ using odeint_ab4_type =
                             odeint::runge_kutta4<State>>;
 
 odestep::adams_bashforth4<State> odestep_ab4;
-odestep::adams_bashforth4<State, odestep::rk4<State, odestep::unchecked>, odestep::unchecked> unchecked_ab4;
+odestep::unchecked_t<odestep::adams_bashforth4<State, odestep::unchecked_t<odestep::rk4<State>>>> unchecked_ab4;
 bench::hand::ab4_history<double, 3> hand_hist;
 bench::hand::ab4_history<double, 3> checked_hist;
 odeint_ab4_type odeint_ab4;

@@ -18,7 +18,7 @@ BENCH_STEP int bench_step_sho_float_rk4_odestep(State& y, State&, float t, float
     return static_cast<int>(odestep::rk4<State>{}.step(rhs, y, t, dt));
 }
 BENCH_STEP int bench_step_sho_float_rk4_odestep_unchecked(State& y, State&, float t, float dt) {
-    return static_cast<int>(odestep::rk4<State, odestep::unchecked>{}.step(rhs, y, t, dt));
+    return static_cast<int>(odestep::unchecked_t<odestep::rk4<State>>{}.step(rhs, y, t, dt));
 }
 BENCH_STEP int bench_step_sho_float_rk4_hand(State& y, State&, float t, float dt) {
     bench::hand::rk4(rhs, y, t, dt);
@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
     return bench::main<State>(
         argc, argv, p,
         {{"odestep", "odestep::rk4<std::array<float, 2>>", bench_step_sho_float_rk4_odestep, true},
-         {"odestep_unchecked", "odestep::rk4<State, odestep::unchecked>: no NaN/Inf test (the same arithmetic)",
+         {"odestep_unchecked", "odestep::unchecked_t<odestep::rk4<State>>: no NaN/Inf test (the same arithmetic)",
           bench_step_sho_float_rk4_odestep_unchecked, true},
          {"hand", "hand-written RK4 loop, float", bench_step_sho_float_rk4_hand, true},
          {"hand_checked",

@@ -102,18 +102,18 @@ TEST_CASE("stepper: every stepper of the library publishes the one trait set") {
     static_assert(odestep::adams_bashforth4<s2>::checks_finiteness && odestep::velocity_verlet<s2>::checks_finiteness);
     static_assert(odestep::beeman<s2>::checks_finiteness && odestep::boris<s3>::checks_finiteness);
     static_assert(odestep::radau_iia5<s2>::checks_finiteness && user_euler<s1>::checks_finiteness);
-    static_assert(!odestep::rk4<s2, odestep::unchecked>::checks_finiteness);
-    static_assert(!odestep::dop853<s3, odestep::unchecked>::checks_finiteness);
-    static_assert(!odestep::adams_bashforth4<s2, odestep::rk4<s2>, odestep::unchecked>::checks_finiteness);
-    static_assert(!odestep::adams_bashforth_moulton4<s2, odestep::rk4<s2>, odestep::unchecked>::checks_finiteness);
-    static_assert(!odestep::velocity_verlet<s2, odestep::unchecked>::checks_finiteness);
-    static_assert(!odestep::euler_cromer<s2, odestep::unchecked>::checks_finiteness);
-    static_assert(!odestep::position_verlet<s2, odestep::unchecked>::checks_finiteness);
-    static_assert(publishes_the_set<odestep::rk4<s2, odestep::unchecked>>());
-    static_assert(publishes_the_set<odestep::adams_bashforth4<s2, odestep::rk4<s2>, odestep::unchecked>>());
-    static_assert(publishes_the_set<odestep::forest_ruth<s2, odestep::unchecked>>());
-    static_assert(odestep::rk4<s2, odestep::unchecked>::order == 4 &&
-                  odestep::rk4<s2, odestep::unchecked>::rhs_evals_per_step == 4);
+    static_assert(!odestep::unchecked_t<odestep::rk4<s2>>::checks_finiteness);
+    static_assert(!odestep::unchecked_t<odestep::dop853<s3>>::checks_finiteness);
+    static_assert(!odestep::unchecked_t<odestep::adams_bashforth4<s2, odestep::rk4<s2>>>::checks_finiteness);
+    static_assert(!odestep::unchecked_t<odestep::adams_bashforth_moulton4<s2, odestep::rk4<s2>>>::checks_finiteness);
+    static_assert(!odestep::unchecked_t<odestep::velocity_verlet<s2>>::checks_finiteness);
+    static_assert(!odestep::unchecked_t<odestep::euler_cromer<s2>>::checks_finiteness);
+    static_assert(!odestep::unchecked_t<odestep::position_verlet<s2>>::checks_finiteness);
+    static_assert(publishes_the_set<odestep::unchecked_t<odestep::rk4<s2>>>());
+    static_assert(publishes_the_set<odestep::unchecked_t<odestep::adams_bashforth4<s2, odestep::rk4<s2>>>>());
+    static_assert(publishes_the_set<odestep::unchecked_t<odestep::forest_ruth<s2>>>());
+    static_assert(odestep::unchecked_t<odestep::rk4<s2>>::order == 4 &&
+                  odestep::unchecked_t<odestep::rk4<s2>>::rhs_evals_per_step == 4);
 }
 
 TEST_CASE("stepper: a user's own stepper runs under integrate, integrate_n_steps and both event loops") {

@@ -117,7 +117,7 @@ TEST_CASE("unchecked: explicit Runge-Kutta, every table, the checked form's bits
     });
     // And the arithmetic itself, from the closed form: Euler on y' = -y with dt = 1/8 gives y_1 = 7/8 exactly.
     std::array<double, 1> y{1.0};
-    REQUIRE(odestep::euler<std::array<double, 1>, odestep::unchecked>{}.step(
+    REQUIRE(odestep::unchecked_t<odestep::euler<std::array<double, 1>>>{}.step(
                 [](double, const std::array<double, 1>& x) { return std::array<double, 1>{-x[0]}; }, y, 0.0, 0.125) ==
             odestep::status::ok);
     CHECK(y[0] == 0.875);
@@ -135,7 +135,7 @@ TEST_CASE("unchecked: Adams, every table, the checked form's bits; a NaN from f;
     odestep_test::for_each_type<odestep_test::adams_methods>([](auto m) {
         using M = decltype(m);
         odestep::adams<M, d3> checked;
-        odestep::adams<M, d3, odestep::rk4<d3, odestep::unchecked>, odestep::unchecked> unchecked;
+        odestep::adams<M, d3, odestep::unchecked_t<odestep::rk4<d3>>, odestep::unchecked> unchecked;
         odestep::adams<M, d3, odestep::rk4<d3>, odestep::unchecked> unchecked_start;  // checked starter
         static_assert(!decltype(unchecked)::checks_finiteness && !decltype(unchecked_start)::checks_finiteness);
         system3<d3> f{};
@@ -214,7 +214,7 @@ TEST_CASE("unchecked: splitting methods, every table, the checked form's bits; a
 
 TEST_CASE("unchecked: velocity Verlet with the acceleration kept by the caller") {
     const odestep::velocity_verlet<d2> checked{};
-    const odestep::velocity_verlet<d2, odestep::unchecked> unchecked{};
+    const odestep::unchecked_t<odestep::velocity_verlet<d2>> unchecked{};
     auto a = [](double, const d2& x) { return d2{-x[0] - 0.1 * x[0] * x[0] * x[0], -x[1]}; };
     const double dt = 0.03125;
     d2 xa{1.0, 0.5};

@@ -29,6 +29,16 @@ struct unchecked {
     static constexpr bool checks_finiteness = false;  ///< the step does not test its results
 };
 
+/// The stepper S under check policy Check, for the steppers that take one (explicit_rk and its named forms,
+/// adams, splitting): `odestep::with_check_t<odestep::rk4<State>, odestep::unchecked>`.
+template <class S, class Check>
+using with_check_t = typename S::template with_check<Check>;
+
+/// The unchecked form of stepper S: `odestep::unchecked_t<odestep::rk4<State>>` is RK4 without the NaN/Inf
+/// test (odestep::unchecked).
+template <class S>
+using unchecked_t = with_check_t<S, unchecked>;
+
 /// \brief The trait set every stepper publishes, with the values most steppers have.
 ///
 /// A stepper is a class with `using state_type = State` (a `std::array<T, N>`), `using value_type = T`, the

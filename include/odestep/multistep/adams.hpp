@@ -65,7 +65,7 @@ struct is_explicit_rk<explicit_rk<Method, State, Check>> : std::true_type {};
 /// Check (odestep::checked, the default, or odestep::unchecked): with `unchecked` the step does not test y_{n+1}
 /// (nor, starting, f_n) for NaN and Inf, and writes y in place; the history's checks (step_mismatch,
 /// invalid_time) stay. The first k-1 steps are the Starter's, under the Starter's own policy (give
-/// `rk4<State, unchecked>` for none at all).
+/// `unchecked_t<rk4<State>>` for none at all).
 template <class Method, class State, class Starter = rk4<State>, class Check = checked>
 class adams : public stepper_defaults<State> {
 public:
@@ -77,6 +77,9 @@ public:
     using method_type = Method;
     using starter_type = Starter;  ///< the one-step method of the first k-1 steps
     using check_type = Check;      ///< the check policy: odestep::checked or odestep::unchecked
+    /// The same stepper under check policy C (odestep::with_check_t); the starter stays as it is.
+    template <class C>
+    using with_check = adams<Method, State, Starter, C>;
     /// The step tests its results for NaN and Inf (trait; see odestep::stepper_defaults).
     static constexpr bool checks_finiteness = Check::checks_finiteness;
 
@@ -283,18 +286,17 @@ private:
     }
 };
 
-/// The named multistep steppers. The starter, for the first k-1 steps, is rk4 unless given; the check policy
-/// is odestep::checked unless given.
-template <class State, class Starter = rk4<State>, class Check = checked>
-using adams_bashforth2 = adams<tables::bashforth2, State, Starter, Check>;
-template <class State, class Starter = rk4<State>, class Check = checked>
-using adams_bashforth3 = adams<tables::bashforth3, State, Starter, Check>;
-template <class State, class Starter = rk4<State>, class Check = checked>
-using adams_bashforth4 = adams<tables::bashforth4, State, Starter, Check>;
-template <class State, class Starter = rk4<State>, class Check = checked>
-using adams_bashforth5 = adams<tables::bashforth5, State, Starter, Check>;
-template <class State, class Starter = rk4<State>, class Check = checked>
-using adams_bashforth_moulton4 = adams<tables::bashforth_moulton4, State, Starter, Check>;
+/// The named multistep steppers. The starter, for the first k-1 steps, is rk4 unless given.
+template <class State, class Starter = rk4<State>>
+using adams_bashforth2 = adams<tables::bashforth2, State, Starter>;
+template <class State, class Starter = rk4<State>>
+using adams_bashforth3 = adams<tables::bashforth3, State, Starter>;
+template <class State, class Starter = rk4<State>>
+using adams_bashforth4 = adams<tables::bashforth4, State, Starter>;
+template <class State, class Starter = rk4<State>>
+using adams_bashforth5 = adams<tables::bashforth5, State, Starter>;
+template <class State, class Starter = rk4<State>>
+using adams_bashforth_moulton4 = adams<tables::bashforth_moulton4, State, Starter>;
 
 }  // namespace odestep
 

@@ -114,6 +114,9 @@ public:
     using method_type = Method;
     /// The check policy: odestep::checked or odestep::unchecked.
     using check_type = Check;
+    /// The same stepper under check policy C (odestep::with_check_t).
+    template <class C>
+    using with_check = splitting<Method, State, C>;
     /// The step tests its results for NaN and Inf (trait; see odestep::stepper_defaults).
     static constexpr bool checks_finiteness = Check::checks_finiteness;
 
@@ -319,22 +322,22 @@ private:
 };
 
 // The named steppers.
-template <class State, class Check = checked>
-using euler_cromer = splitting<tables::euler_cromer, State, Check>;
-template <class State, class Check = checked>
-using euler_cromer_drift_first = splitting<tables::euler_cromer_drift_first, State, Check>;
-template <class State, class Check = checked>
-using velocity_verlet = splitting<tables::velocity_verlet, State, Check>;
-template <class State, class Check = checked>
-using leapfrog = splitting<tables::velocity_verlet, State, Check>;
-template <class State, class Check = checked>
-using position_verlet = splitting<tables::position_verlet, State, Check>;
-template <class State, class Check = checked>
-using forest_ruth = splitting<tables::forest_ruth, State, Check>;
-template <class State, class Check = checked>
-using yoshida6 = splitting<tables::yoshida6, State, Check>;
-template <class State, class Check = checked>
-using blanes_moan4 = splitting<tables::blanes_moan4, State, Check>;
+template <class State>
+using euler_cromer = splitting<tables::euler_cromer, State>;
+template <class State>
+using euler_cromer_drift_first = splitting<tables::euler_cromer_drift_first, State>;
+template <class State>
+using velocity_verlet = splitting<tables::velocity_verlet, State>;
+template <class State>
+using leapfrog = splitting<tables::velocity_verlet, State>;
+template <class State>
+using position_verlet = splitting<tables::position_verlet, State>;
+template <class State>
+using forest_ruth = splitting<tables::forest_ruth, State>;
+template <class State>
+using yoshida6 = splitting<tables::yoshida6, State>;
+template <class State>
+using blanes_moan4 = splitting<tables::blanes_moan4, State>;
 
 }  // namespace odestep
 #endif

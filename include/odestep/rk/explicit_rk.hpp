@@ -100,6 +100,9 @@ public:
     using value_type = value_type_t<State>;  ///< T, the scalar type of the state and the table
     using method_type = Method;              ///< the table's type (odestep::tables)
     using check_type = Check;                ///< the check policy: odestep::checked or odestep::unchecked
+    /// The same stepper under check policy C (odestep::with_check_t).
+    template <class C>
+    using with_check = explicit_rk<Method, State, C>;
     /// The step tests its results for NaN and Inf (trait; see odestep::stepper_defaults).
     static constexpr bool checks_finiteness = Check::checks_finiteness;
 
@@ -470,36 +473,36 @@ private:
 
 // The named steppers. A pair steps as a method of its higher order; its error-estimating `step` overload
 // returns the difference to the embedded solution.
-template <class State, class Check = checked>
-using euler = explicit_rk<tables::euler, State, Check>;
-template <class State, class Check = checked>
-using midpoint = explicit_rk<tables::midpoint, State, Check>;
-template <class State, class Check = checked>
-using euler_richardson = explicit_rk<tables::midpoint, State, Check>;
-template <class State, class Check = checked>
-using heun = explicit_rk<tables::heun, State, Check>;
-template <class State, class Check = checked>
-using ralston2 = explicit_rk<tables::ralston2, State, Check>;
-template <class State, class Check = checked>
-using kutta3 = explicit_rk<tables::kutta3, State, Check>;
-template <class State, class Check = checked>
-using ssprk3 = explicit_rk<tables::ssprk3, State, Check>;
-template <class State, class Check = checked>
-using rk4 = explicit_rk<tables::rk4, State, Check>;
-template <class State, class Check = checked>
-using rk38 = explicit_rk<tables::rk38, State, Check>;
-template <class State, class Check = checked>
-using bogacki_shampine32 = explicit_rk<tables::bogacki_shampine32, State, Check>;
-template <class State, class Check = checked>
-using fehlberg45 = explicit_rk<tables::fehlberg45, State, Check>;
-template <class State, class Check = checked>
-using cash_karp54 = explicit_rk<tables::cash_karp54, State, Check>;
-template <class State, class Check = checked>
-using dormand_prince54 = explicit_rk<tables::dormand_prince54, State, Check>;
-template <class State, class Check = checked>
-using fehlberg78 = explicit_rk<tables::fehlberg78, State, Check>;
-template <class State, class Check = checked>
-using dop853 = explicit_rk<tables::dop853, State, Check>;
+template <class State>
+using euler = explicit_rk<tables::euler, State>;
+template <class State>
+using midpoint = explicit_rk<tables::midpoint, State>;
+template <class State>
+using euler_richardson = explicit_rk<tables::midpoint, State>;
+template <class State>
+using heun = explicit_rk<tables::heun, State>;
+template <class State>
+using ralston2 = explicit_rk<tables::ralston2, State>;
+template <class State>
+using kutta3 = explicit_rk<tables::kutta3, State>;
+template <class State>
+using ssprk3 = explicit_rk<tables::ssprk3, State>;
+template <class State>
+using rk4 = explicit_rk<tables::rk4, State>;
+template <class State>
+using rk38 = explicit_rk<tables::rk38, State>;
+template <class State>
+using bogacki_shampine32 = explicit_rk<tables::bogacki_shampine32, State>;
+template <class State>
+using fehlberg45 = explicit_rk<tables::fehlberg45, State>;
+template <class State>
+using cash_karp54 = explicit_rk<tables::cash_karp54, State>;
+template <class State>
+using dormand_prince54 = explicit_rk<tables::dormand_prince54, State>;
+template <class State>
+using fehlberg78 = explicit_rk<tables::fehlberg78, State>;
+template <class State>
+using dop853 = explicit_rk<tables::dop853, State>;
 
 }  // namespace odestep
 
