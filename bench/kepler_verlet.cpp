@@ -22,12 +22,14 @@ constexpr auto odeint_force = [](const vec& x, const vec&, vec& a, double) { ben
 
 odestep::velocity_verlet<vec> odestep_vv;
 vec odestep_acc;       // odestep's explicit form: the caller keeps a(t, x), as the hand loop does
+vec unchecked_acc;     // the same for the unchecked form
 vec hand_acc;          // the hand loop's kept acceleration, a(x) of the current x
 vec hand_checked_acc;  // the checked hand loop's, likewise
 boost::numeric::odeint::velocity_verlet<vec> odeint_vv;
 
 void start_odestep(const State& y0, double t0) { odestep_acc = force(t0, y0.first); }
 void start_odestep_kept(const State&, double) { odestep_vv.reset(); }
+void start_odestep_unchecked(const State& y0, double t0) { unchecked_acc = force(t0, y0.first); }
 void start_hand(const State& y0, double t0) { hand_force(t0, y0.first, hand_acc); }
 void start_hand_checked(const State& y0, double t0) { hand_force(t0, y0.first, hand_checked_acc); }
 void start_odeint(const State&, double) { odeint_vv.reset(); }
@@ -35,6 +37,10 @@ void start_odeint(const State&, double) { odeint_vv.reset(); }
 
 BENCH_STEP int bench_step_kepler_verlet_odestep(State& y, State&, double t, double dt) {
     return static_cast<int>(odestep_vv.step(force, y.first, y.second, odestep_acc, t, dt));
+}
+BENCH_STEP int bench_step_kepler_verlet_odestep_unchecked(State& y, State&, double t, double dt) {
+    return static_cast<int>(
+        odestep::unchecked_t<odestep::velocity_verlet<vec>>{}.step(force, y.first, y.second, unchecked_acc, t, dt));
 }
 BENCH_STEP int bench_step_kepler_verlet_odestep_kept(State& y, State&, double t, double dt) {
     return static_cast<int>(odestep_vv.step(force, y.first, y.second, t, dt));
@@ -69,6 +75,10 @@ int main(int argc, char** argv) {
           bench_step_kepler_verlet_odestep, true, start_odestep},
          {"odestep_kept", "the same stepper's step(a, x, v, t, dt), acc kept and checked by the stepper",
           bench_step_kepler_verlet_odestep_kept, true, start_odestep_kept},
+         {"odestep_unchecked",
+          "odestep::unchecked_t<odestep::velocity_verlet<..>> step(a, x, v, acc, t, dt): no NaN/Inf test (the same "
+          "arithmetic)",
+          bench_step_kepler_verlet_odestep_unchecked, true, start_odestep_unchecked},
          {"hand", "hand-written velocity Verlet loop, acceleration kept", bench_step_kepler_verlet_hand, true,
           start_hand},
          {"hand_checked",

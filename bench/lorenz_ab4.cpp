@@ -25,11 +25,13 @@ using odeint_ab4_type =
                             odeint::runge_kutta4<State>>;
 
 odestep::adams_bashforth4<State> odestep_ab4;
+odestep::unchecked_t<odestep::adams_bashforth4<State, odestep::unchecked_t<odestep::rk4<State>>>> unchecked_ab4;
 bench::hand::ab4_history<double, 3> hand_hist;
 bench::hand::ab4_history<double, 3> checked_hist;
 odeint_ab4_type odeint_ab4;
 
 void start_odestep(const State&, double) { odestep_ab4.reset(); }
+void start_odestep_unchecked(const State&, double) { unchecked_ab4.reset(); }
 void start_hand(const State&, double) { hand_hist = {}; }
 void start_hand_checked(const State&, double) { checked_hist = {}; }
 void start_odeint(const State&, double) { odeint_ab4.reset(); }
@@ -37,6 +39,9 @@ void start_odeint(const State&, double) { odeint_ab4.reset(); }
 
 BENCH_STEP int bench_step_lorenz_ab4_odestep(State& y, State&, double t, double dt) {
     return static_cast<int>(odestep_ab4.step(rhs, y, t, dt));
+}
+BENCH_STEP int bench_step_lorenz_ab4_odestep_unchecked(State& y, State&, double t, double dt) {
+    return static_cast<int>(unchecked_ab4.step(rhs, y, t, dt));
 }
 BENCH_STEP int bench_step_lorenz_ab4_hand(State& y, State&, double t, double dt) {
     bench::hand::adams_bashforth4(rhs, y, hand_hist, t, dt);
@@ -67,6 +72,10 @@ int main(int argc, char** argv) {
         argc, argv, p,
         {{"odestep", "odestep::adams_bashforth4 (rk4 start), history kept and checked by the stepper",
           bench_step_lorenz_ab4_odestep, true, start_odestep},
+         {"odestep_unchecked",
+          "odestep::adams_bashforth4<State, rk4<State, unchecked>, unchecked>: no NaN/Inf test (the same "
+          "arithmetic), the history's grid still checked",
+          bench_step_lorenz_ab4_odestep_unchecked, true, start_odestep_unchecked},
          {"hand", "hand-written Adams-Bashforth 4 loop, the last three f in a ring, rk4 start",
           bench_step_lorenz_ab4_hand, true, start_hand},
          {"hand_checked",

@@ -36,6 +36,9 @@ bench::arkode_erk arkode_rk4(arkode_rhs, 3, 0.005, bench::arkode_user_table{4, 4
 BENCH_STEP int bench_step_lorenz_rk4_odestep(State& y, State&, double t, double dt) {
     return static_cast<int>(odestep::rk4<State>{}.step(rhs, y, t, dt));
 }
+BENCH_STEP int bench_step_lorenz_rk4_odestep_unchecked(State& y, State&, double t, double dt) {
+    return static_cast<int>(odestep::unchecked_t<odestep::rk4<State>>{}.step(rhs, y, t, dt));
+}
 BENCH_STEP int bench_step_lorenz_rk4_hand(State& y, State&, double t, double dt) {
     bench::hand::rk4(rhs, y, t, dt);
     return 0;
@@ -71,6 +74,8 @@ int main(int argc, char** argv) {
         1e-7, false};
     std::vector<bench::variant<State>> variants{
         {"odestep", "odestep::rk4", bench_step_lorenz_rk4_odestep, true},
+        {"odestep_unchecked", "odestep::unchecked_t<odestep::rk4<State>>: no NaN/Inf test (the same arithmetic)",
+         bench_step_lorenz_rk4_odestep_unchecked, true},
         {"hand", "hand-written RK4 loop", bench_step_lorenz_rk4_hand, true},
         {"hand_checked",
          "the hand loop, checked: NaN/Inf in the new y fails the step, which is rolled back "

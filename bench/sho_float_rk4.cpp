@@ -17,6 +17,9 @@ boost::numeric::odeint::runge_kutta4<State, float, State, float> odeint_rk4;
 BENCH_STEP int bench_step_sho_float_rk4_odestep(State& y, State&, float t, float dt) {
     return static_cast<int>(odestep::rk4<State>{}.step(rhs, y, t, dt));
 }
+BENCH_STEP int bench_step_sho_float_rk4_odestep_unchecked(State& y, State&, float t, float dt) {
+    return static_cast<int>(odestep::unchecked_t<odestep::rk4<State>>{}.step(rhs, y, t, dt));
+}
 BENCH_STEP int bench_step_sho_float_rk4_hand(State& y, State&, float t, float dt) {
     bench::hand::rk4(rhs, y, t, dt);
     return 0;
@@ -42,6 +45,8 @@ int main(int argc, char** argv) {
     return bench::main<State>(
         argc, argv, p,
         {{"odestep", "odestep::rk4<std::array<float, 2>>", bench_step_sho_float_rk4_odestep, true},
+         {"odestep_unchecked", "odestep::unchecked_t<odestep::rk4<State>>: no NaN/Inf test (the same arithmetic)",
+          bench_step_sho_float_rk4_odestep_unchecked, true},
          {"hand", "hand-written RK4 loop, float", bench_step_sho_float_rk4_hand, true},
          {"hand_checked",
           "the hand loop, checked: NaN/Inf in the new y fails the step, which is rolled back "

@@ -22,6 +22,9 @@ bench::gsl_stepper gsl_rk4(gsl_odeiv2_step_rk4, gsl_rhs, 12);
 BENCH_STEP int bench_step_threebody_rk4_odestep(State& y, State&, double t, double dt) {
     return static_cast<int>(odestep::rk4<State>{}.step(rhs, y, t, dt));
 }
+BENCH_STEP int bench_step_threebody_rk4_odestep_unchecked(State& y, State&, double t, double dt) {
+    return static_cast<int>(odestep::unchecked_t<odestep::rk4<State>>{}.step(rhs, y, t, dt));
+}
 BENCH_STEP int bench_step_threebody_rk4_hand(State& y, State&, double t, double dt) {
     bench::hand::rk4(rhs, y, t, dt);
     return 0;
@@ -52,6 +55,8 @@ int main(int argc, char** argv) {
     return bench::main<State>(
         argc, argv, p,
         {{"odestep", "odestep::rk4", bench_step_threebody_rk4_odestep, true},
+         {"odestep_unchecked", "odestep::unchecked_t<odestep::rk4<State>>: no NaN/Inf test (the same arithmetic)",
+          bench_step_threebody_rk4_odestep_unchecked, true},
          {"hand", "hand-written RK4 loop", bench_step_threebody_rk4_hand, true},
          {"hand_checked",
           "the hand loop, checked: NaN/Inf in the new y fails the step, which is rolled back "

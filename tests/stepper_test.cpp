@@ -27,6 +27,7 @@ constexpr bool publishes_the_set() {
     static_assert(std::is_same_v<decltype(S::rhs_evals_per_error_step), const std::size_t>);
     static_assert(std::is_same_v<decltype(S::embedded_order), const int>);
     static_assert(std::is_same_v<decltype(S::system), const odestep::system_form>);
+    static_assert(std::is_same_v<decltype(S::checks_finiteness), const bool>);
     static_assert(S::error_estimate == (S::embedded_order > 0));
     static_assert(S::error_estimate == (S::rhs_evals_per_error_step > 0));
     return true;
@@ -93,6 +94,26 @@ TEST_CASE("stepper: every stepper of the library publishes the one trait set") {
                   odestep::newtonian_euler_richardson<s2>::embedded_order == 1);
     static_assert(odestep::dormand_prince54<s2>::rhs_evals_per_step == 6 &&
                   odestep::dormand_prince54<s2>::rhs_evals_per_error_step == 7);
+
+    // checks_finiteness: every stepper's default form checks (the policy odestep::checked, or a stepper
+    // without a policy, whose step tests its results); the unchecked forms say they do not, and publish
+    // the rest of the set unchanged.
+    static_assert(odestep::rk4<s2>::checks_finiteness && odestep::dop853<s3>::checks_finiteness);
+    static_assert(odestep::adams_bashforth4<s2>::checks_finiteness && odestep::velocity_verlet<s2>::checks_finiteness);
+    static_assert(odestep::beeman<s2>::checks_finiteness && odestep::boris<s3>::checks_finiteness);
+    static_assert(odestep::radau_iia5<s2>::checks_finiteness && user_euler<s1>::checks_finiteness);
+    static_assert(!odestep::unchecked_t<odestep::rk4<s2>>::checks_finiteness);
+    static_assert(!odestep::unchecked_t<odestep::dop853<s3>>::checks_finiteness);
+    static_assert(!odestep::unchecked_t<odestep::adams_bashforth4<s2, odestep::rk4<s2>>>::checks_finiteness);
+    static_assert(!odestep::unchecked_t<odestep::adams_bashforth_moulton4<s2, odestep::rk4<s2>>>::checks_finiteness);
+    static_assert(!odestep::unchecked_t<odestep::velocity_verlet<s2>>::checks_finiteness);
+    static_assert(!odestep::unchecked_t<odestep::euler_cromer<s2>>::checks_finiteness);
+    static_assert(!odestep::unchecked_t<odestep::position_verlet<s2>>::checks_finiteness);
+    static_assert(publishes_the_set<odestep::unchecked_t<odestep::rk4<s2>>>());
+    static_assert(publishes_the_set<odestep::unchecked_t<odestep::adams_bashforth4<s2, odestep::rk4<s2>>>>());
+    static_assert(publishes_the_set<odestep::unchecked_t<odestep::forest_ruth<s2>>>());
+    static_assert(odestep::unchecked_t<odestep::rk4<s2>>::order == 4 &&
+                  odestep::unchecked_t<odestep::rk4<s2>>::rhs_evals_per_step == 4);
 }
 
 TEST_CASE("stepper: a user's own stepper runs under integrate, integrate_n_steps and both event loops") {

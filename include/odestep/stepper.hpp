@@ -14,6 +14,31 @@
 
 namespace odestep {
 
+/// \brief The check policy of a stepper that tests its results for NaN and Inf: the default of every stepper
+/// that takes a policy. A step whose new state (or error estimate, or a stage no result reads) is not finite
+/// returns `status::non_finite` and leaves the caller's state as it was.
+struct checked {
+    static constexpr bool checks_finiteness = true;  ///< the step tests its results (the trait of that name)
+};
+
+/// \brief The check policy for callers who validate elsewhere: the same arithmetic as `checked`, operation for
+/// operation (the same results, bit for bit, on a finite run), without the NaN/Inf test and without the
+/// roll-back it needs: a NaN or Inf from the right-hand side goes into the state and the step returns `ok`.
+/// Other checks (a multistep history's grid, a tolerance) stay.
+struct unchecked {
+    static constexpr bool checks_finiteness = false;  ///< the step does not test its results
+};
+
+/// The stepper S under check policy Check, for the steppers that take one (explicit_rk and its named forms,
+/// adams, splitting): `odestep::with_check_t<odestep::rk4<State>, odestep::unchecked>`.
+template <class S, class Check>
+using with_check_t = typename S::template with_check<Check>;
+
+/// The unchecked form of stepper S: `odestep::unchecked_t<odestep::rk4<State>>` is RK4 without the NaN/Inf
+/// test (odestep::unchecked).
+template <class S>
+using unchecked_t = with_check_t<S, unchecked>;
+
 /// \brief The trait set every stepper publishes, with the values most steppers have.
 ///
 /// A stepper is a class with `using state_type = State` (a `std::array<T, N>`), `using value_type = T`, the
@@ -76,6 +101,10 @@ struct stepper_defaults {
     static constexpr bool velocity_forces = false;
     /// Implicit (solves an equation in each step: Newton iterations, a factorization).
     static constexpr bool implicit = false;
+    /// The step tests its results for NaN and Inf and returns `status::non_finite`, the state untouched, when
+    /// one is not finite (the `checked` policy, every library stepper's default). False for a stepper in its
+    /// `unchecked` form, which promises nothing about a non-finite value (the caller validates elsewhere).
+    static constexpr bool checks_finiteness = true;
 };
 
 namespace detail {

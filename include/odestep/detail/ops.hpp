@@ -104,6 +104,32 @@ ODESTEP_INLINE constexpr bool all_finite(const std::array<T, N>& y, const More&.
     return finite_sum(sum) || (each_finite(y) && (each_finite(more) && ...));
 }
 
+/// The fast finiteness test of a step under its check policy (odestep::checked, odestep::unchecked), the one
+/// place where the policy acts: finite_sum(total) for a policy that checks (total: the plain sum of every
+/// value the step tests; the step runs the exact test, each_finite, only when this fails), the constant
+/// true for one that does not, which makes the step's `!finite_sum_under(total) && !exact` false at compile
+/// time: no sum, no exact test, and the results written where they go, with no copy kept for a roll-back
+/// (the same arithmetic otherwise, so a finite run gives the same state bit for bit).
+template <class Check, class T>
+ODESTEP_INLINE constexpr bool finite_sum_under([[maybe_unused]] T total) noexcept {
+    if constexpr (Check::checks_finiteness) {
+        return finite_sum(total);
+    } else {
+        return true;
+    }
+}
+
+/// all_finite under a check policy: all_finite for a policy that checks, true for one that does not.
+template <class Check, class T, std::size_t N, class... More>
+ODESTEP_INLINE constexpr bool all_finite_under([[maybe_unused]] const std::array<T, N>& y,
+                                               [[maybe_unused]] const More&... more) noexcept {
+    if constexpr (Check::checks_finiteness) {
+        return all_finite(y, more...);
+    } else {
+        return true;
+    }
+}
+
 /// How assign copies a state: component by component, so that values still in registers go straight to
 /// memory (the default); or, where the build optimizes for size and the state has more than two components,
 /// as one block, the fewest and shortest instructions for a state built in memory (explicit_rk's new

@@ -99,7 +99,11 @@ struct splitting_cache<State, true> {
 /// the force, and the next step evaluates afresh. One stepper can step several states, correctly, but
 /// each step then evaluates afresh: give each state its own stepper. The other tables keep no state at
 /// all, and their step is const.
-template <class Method, class State>
+///
+/// Check (odestep::checked, the default, or odestep::unchecked): whether the step tests the new x and v for
+/// NaN and Inf (and returns `status::non_finite` with x, v and a kept acceleration untouched) or writes
+/// them as they come. The arithmetic is the same in both.
+template <class Method, class State, class Check = checked>
 class splitting : public stepper_defaults<State> {
 public:
     /// The state, std::array<T, N>.
@@ -108,6 +112,13 @@ public:
     using value_type = value_type_t<State>;
     /// The method (table tag) type.
     using method_type = Method;
+    /// The check policy: odestep::checked or odestep::unchecked.
+    using check_type = Check;
+    /// The same stepper under check policy C (odestep::with_check_t).
+    template <class C>
+    using with_check = splitting<Method, State, C>;
+    /// The step tests its results for NaN and Inf (trait; see odestep::stepper_defaults).
+    static constexpr bool checks_finiteness = Check::checks_finiteness;
 
 private:
     using T = value_type;
@@ -232,13 +243,16 @@ private:
         // a v component that is +-Inf or NaN, h v is +-Inf or NaN (h = 0 included: 0 Inf is NaN), and so is
         // x plus it, whatever x. So a finite new x proves the new v finite, and half the test goes.
         T total = -T(0);  // x + (-0) is x, exactly: the compiler drops that first addition
-        ODESTEP_STEP_UNROLL
-        for (std::size_t n = 0; n < N; ++n) total += wx[n];
-        if constexpr (ends_with_kick) {
+        if constexpr (checks_finiteness) {
             ODESTEP_STEP_UNROLL
-            for (std::size_t n = 0; n < N; ++n) total += wv[n];
+            for (std::size_t n = 0; n < N; ++n) total += wx[n];
+            if constexpr (ends_with_kick) {
+                ODESTEP_STEP_UNROLL
+                for (std::size_t n = 0; n < N; ++n) total += wv[n];
+            }
         }
-        if (!detail::finite_sum(total) && !(detail::each_finite(wx) && (!ends_with_kick || detail::each_finite(wv))))
+        if (!detail::finite_sum_under<Check>(total) &&
+            !(detail::each_finite(wx) && (!ends_with_kick || detail::each_finite(wv))))
             return status::non_finite;
         detail::assign(x, wx);
         detail::assign(v, wv);

@@ -89,12 +89,22 @@ constexpr factored_weights<T, S> factor_weights(const std::array<T, S>& w) noexc
 /// instruction, and a stage that nothing reads is never evaluated (Dormand-Prince's seventh stage costs
 /// nothing unless the error estimate is asked for). The stepper holds no state: the stage derivatives
 /// live on the stack of one `step` call, (stages + 2) states at most.
-template <class Method, class State>
+///
+/// Check (odestep::checked, the default, or odestep::unchecked): whether the step tests its results for
+/// NaN and Inf (and returns `status::non_finite` with y untouched) or writes them as they come. The
+/// arithmetic is the same in both.
+template <class Method, class State, class Check = checked>
 class explicit_rk : public stepper_defaults<State> {
 public:
     using state_type = State;                ///< the state, std::array<T, N> or a user type
     using value_type = value_type_t<State>;  ///< T, the scalar type of the state and the table
     using method_type = Method;              ///< the table's type (odestep::tables)
+    using check_type = Check;                ///< the check policy: odestep::checked or odestep::unchecked
+    /// The same stepper under check policy C (odestep::with_check_t).
+    template <class C>
+    using with_check = explicit_rk<Method, State, C>;
+    /// The step tests its results for NaN and Inf (trait; see odestep::stepper_defaults).
+    static constexpr bool checks_finiteness = Check::checks_finiteness;
 
 private:
     using T = value_type;
@@ -133,15 +143,15 @@ private:
     // where a NaN need not survive (an f that ignores its input: a forcing f(t), a switch, a saturation), so
     // its value is added to the finiteness test itself. A stage with a non-zero weight needs nothing more:
     // w NaN and w Inf are not finite, and neither is a sum with such a term.
-    static constexpr std::array<bool, S> unchecked_stages(bool with_error, std::size_t estimates) noexcept {
+    static constexpr std::array<bool, S> unweighted_stages(bool with_error, std::size_t estimates) noexcept {
         const std::array<bool, S> evaluated = needed_stages(with_error);
-        std::array<bool, S> unchecked{};
+        std::array<bool, S> unweighted{};
         for (std::size_t i = 0; i < S; ++i) {
             bool reached = tab.b[i] != T(0);
             for (std::size_t e = 0; e < estimates && e < E; ++e) reached = reached || tab.b[i] != tab.bhat[e][i];
-            unchecked[i] = evaluated[i] && !reached;
+            unweighted[i] = evaluated[i] && !reached;
         }
-        return unchecked;
+        return unweighted;
     }
 
 public:
@@ -156,29 +166,32 @@ public:
     /// The order of the (first) embedded method, 0 without one.
     static constexpr int embedded_order = E > 0 ? tab.embedded_order[0] : 0;
 
-    /// y <- y(t + dt). On `status::non_finite` y is left as it was.
+    /// y <- y(t + dt). Checked: on `status::non_finite` y is left as it was. Unchecked: always `ok`.
     template <class System>
     ODESTEP_STEP_FLATTEN [[nodiscard]] status step(System&& f, State& y, T t, T dt) const {
         std::array<State, S> k;  // not zeroed: every stage the step reads is written first
         State next;
         run_stages<false>(f, y, t, dt, k, next, std::make_index_sequence<S>{});
         constexpr std::size_t estimates = 0;
+        constexpr bool in_place = !checks_finiteness && !next_from_stage<false>;
+        State& out = target<in_place>(next, y);
         T total = -T(0);  // x + (-0) is x, exactly: the compiler drops that first addition
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
-            if constexpr (!next_from_stage<false>) next[n] = y[n] + sum<b_weights>(k, n, dt);
+            if constexpr (!next_from_stage<false>) out[n] = y[n] + sum<b_weights>(k, n, dt);
             if constexpr (fused_total) {
                 total += next[n];
                 add_stage_components<estimates>(total, k, n);
             }
         }
-        if constexpr (!fused_total) {
+        if constexpr (separate_total) {
             add_all(total, next);
             add_stages<estimates>(total, k);
         }
-        if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) && !(detail::each_finite(next) && stages_finite<estimates>(k)))
+        if (ODESTEP_UNLIKELY(!detail::finite_sum_under<Check>(total)) &&
+            !(detail::each_finite(next) && stages_finite<estimates>(k)))
             return status::non_finite;
-        detail::assign<detail::copy_form::block_at_size>(y, next);
+        if constexpr (!in_place) detail::assign<detail::copy_form::block_at_size>(y, next);
         return status::ok;
     }
 
@@ -191,27 +204,30 @@ public:
         State next;
         run_stages<true>(f, y, t, dt, k, next, std::make_index_sequence<S>{});
         constexpr std::size_t estimates = 1;
+        constexpr bool in_place = !checks_finiteness && !next_from_stage<true>;
+        State& out = target<in_place>(next, y);
         State err;
+        State& err_out = target<!checks_finiteness>(err, error);
         T total = -T(0);
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
-            if constexpr (!next_from_stage<true>) next[n] = y[n] + sum<b_weights>(k, n, dt);
-            err[n] = sum<error_weights<0>>(k, n, dt);
+            if constexpr (!next_from_stage<true>) out[n] = y[n] + sum<b_weights>(k, n, dt);
+            err_out[n] = sum<error_weights<0>>(k, n, dt);
             if constexpr (fused_total) {
                 total += next[n] + err[n];
                 add_stage_components<estimates>(total, k, n);
             }
         }
-        if constexpr (!fused_total) {
+        if constexpr (separate_total) {
             add_all(total, next);
             add_all(total, err);
             add_stages<estimates>(total, k);
         }
-        if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) &&
+        if (ODESTEP_UNLIKELY(!detail::finite_sum_under<Check>(total)) &&
             !(detail::each_finite(next) && detail::each_finite(err) && stages_finite<estimates>(k)))
             return status::non_finite;
-        detail::assign<detail::copy_form::block_at_size>(y, next);
-        detail::assign<detail::copy_form::block_at_size>(error, err);
+        if constexpr (!in_place) detail::assign<detail::copy_form::block_at_size>(y, next);
+        if constexpr (checks_finiteness) detail::assign<detail::copy_form::block_at_size>(error, err);
         return status::ok;
     }
 
@@ -223,31 +239,38 @@ public:
         State next;
         run_stages<true>(f, y, t, dt, k, next, std::make_index_sequence<S>{});
         constexpr std::size_t estimates = 2;
+        constexpr bool in_place = !checks_finiteness && !next_from_stage<true>;
+        State& out = target<in_place>(next, y);
         State err;
         State err2;
+        State& err_out = target<!checks_finiteness>(err, error);
+        State& err2_out = target<!checks_finiteness>(err2, error2);
         T total = -T(0);
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
-            if constexpr (!next_from_stage<true>) next[n] = y[n] + sum<b_weights>(k, n, dt);
-            err[n] = sum<error_weights<0>>(k, n, dt);
-            err2[n] = sum<error_weights<1>>(k, n, dt);
+            if constexpr (!next_from_stage<true>) out[n] = y[n] + sum<b_weights>(k, n, dt);
+            err_out[n] = sum<error_weights<0>>(k, n, dt);
+            err2_out[n] = sum<error_weights<1>>(k, n, dt);
             if constexpr (fused_total) {
                 total += next[n] + err[n] + err2[n];
                 add_stage_components<estimates>(total, k, n);
             }
         }
-        if constexpr (!fused_total) {
+        if constexpr (separate_total) {
             add_all(total, next);
             add_all(total, err);
             add_all(total, err2);
             add_stages<estimates>(total, k);
         }
-        if (ODESTEP_UNLIKELY(!detail::finite_sum(total)) && !(detail::each_finite(next) && detail::each_finite(err) &&
-                                                              detail::each_finite(err2) && stages_finite<estimates>(k)))
+        if (ODESTEP_UNLIKELY(!detail::finite_sum_under<Check>(total)) &&
+            !(detail::each_finite(next) && detail::each_finite(err) && detail::each_finite(err2) &&
+              stages_finite<estimates>(k)))
             return status::non_finite;
-        detail::assign<detail::copy_form::block_at_size>(y, next);
-        detail::assign<detail::copy_form::block_at_size>(error, err);
-        detail::assign<detail::copy_form::block_at_size>(error2, err2);
+        if constexpr (!in_place) detail::assign<detail::copy_form::block_at_size>(y, next);
+        if constexpr (checks_finiteness) {
+            detail::assign<detail::copy_form::block_at_size>(error, err);
+            detail::assign<detail::copy_form::block_at_size>(error2, err2);
+        }
         return status::ok;
     }
 
@@ -256,18 +279,29 @@ private:
 
     // The finiteness test's sum (detail::finite_sum) of the new state, and of the estimates. Optimizing for
     // size, it is accumulated in the loop that computes them (one loop, not two); otherwise after that
-    // loop, which leaves it free to be vectorized.
-    static constexpr bool fused_total = detail::optimizing_for_size;
+    // loop, which leaves it free to be vectorized. Unchecked: no sum.
+    static constexpr bool fused_total = checks_finiteness && detail::optimizing_for_size;
+    static constexpr bool separate_total = checks_finiteness && !detail::optimizing_for_size;
+    // Where a result is computed: the caller's object itself (InPlace: unchecked, nothing to roll back), or a
+    // local copied to it after the test.
+    template <bool InPlace>
+    ODESTEP_INLINE static State& target(State& local, State& caller) noexcept {
+        if constexpr (InPlace) {
+            return caller;
+        } else {
+            return local;
+        }
+    }
     ODESTEP_INLINE static void add_all(T& total, const State& v) noexcept {
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) total += v[n];
     }
-    // The unchecked stages' values (unchecked_stages) in the finiteness test of a step that returns
+    // The unweighted stages' values (unweighted_stages) in the finiteness test of a step that returns
     // Estimates estimates: their components added to the sum, component n (in the fused loop) or all of
     // them, and the exact test of the slow path. Expanded at compile time: for a table whose weights are
     // all non-zero the set is empty and nothing is emitted.
     template <std::size_t Estimates>
-    static constexpr std::array<bool, S> unchecked = unchecked_stages(Estimates > 0, Estimates);
+    static constexpr std::array<bool, S> unweighted = unweighted_stages(Estimates > 0, Estimates);
     template <std::size_t Estimates>
     ODESTEP_INLINE static void add_stage_components(T& total, const std::array<State, S>& k, std::size_t n) noexcept {
         add_stage_components<Estimates>(total, k, n, std::make_index_sequence<S>{});
@@ -275,7 +309,7 @@ private:
     template <std::size_t Estimates, std::size_t... I>
     ODESTEP_INLINE static void add_stage_components(T& total, const std::array<State, S>& k, std::size_t n,
                                                     std::index_sequence<I...>) noexcept {
-        ((unchecked<Estimates>[I] ? void(total += k[I][n]) : void()), ...);
+        ((unweighted<Estimates>[I] ? void(total += k[I][n]) : void()), ...);
     }
     template <std::size_t Estimates>
     ODESTEP_INLINE static void add_stages(T& total, const std::array<State, S>& k) noexcept {
@@ -288,7 +322,7 @@ private:
     }
     template <std::size_t Estimates, std::size_t... I>
     ODESTEP_INLINE static bool stages_finite(const std::array<State, S>& k, std::index_sequence<I...>) noexcept {
-        return ((!unchecked<Estimates>[I] || detail::each_finite(k[I])) && ...);
+        return ((!unweighted<Estimates>[I] || detail::each_finite(k[I])) && ...);
     }
 
     // Weight rows as types, so that each weight is a constant expression inside `sum`.
