@@ -327,16 +327,10 @@ private:
 
     // Weight rows as types, so that each weight is a constant expression inside `sum`.
     template <std::size_t I>
-    struct a_row {
-        static constexpr T value(std::size_t j) noexcept { return j < I ? tab.a[I][j] : T(0); }
-    };
-    struct b_weights {
-        static constexpr T value(std::size_t j) noexcept { return tab.b[j]; }
-    };
+    using a_row = typename detail::table_rows<Method, T>::template a_row<I>;
+    using b_weights = typename detail::table_rows<Method, T>::b_weights;
     template <std::size_t Which>
-    struct error_weights {
-        static constexpr T value(std::size_t j) noexcept { return tab.b[j] - tab.bhat[Which][j]; }
-    };
+    using error_weights = typename detail::table_rows<Method, T>::template error_weights<Which>;
     template <class W>
     static constexpr std::size_t first_nonzero() noexcept {
         for (std::size_t j = 0; j < S; ++j)

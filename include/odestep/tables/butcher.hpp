@@ -149,6 +149,33 @@ constexpr bool is_symmetric(const butcher_tableau<T, S, E>& tab) noexcept {
     return true;
 }
 
+namespace detail {
+
+/// A Butcher table's rows as types, so that each coefficient is a constant expression inside the steppers'
+/// sums expanded at compile time (explicit_rk and the adaptive engine's embedded pair):
+/// a_row<I>::value(j) = a_Ij (0 for j >= I), b_weights::value(j) = b_j, error_weights<E>::value(j) =
+/// b_j - bhat_Ej. `Method` is a table tag (tables/runge_kutta.hpp), T the scalar.
+template <class Method, class T>
+struct table_rows {
+    static constexpr auto tab = Method::template table<T>;
+    /// Row I of a.
+    template <std::size_t I>
+    struct a_row {
+        static constexpr T value(std::size_t j) noexcept { return j < I ? tab.a[I][j] : T(0); }
+    };
+    /// The weights b.
+    struct b_weights {
+        static constexpr T value(std::size_t j) noexcept { return tab.b[j]; }
+    };
+    /// b minus the embedded weights of estimate Which.
+    template <std::size_t Which>
+    struct error_weights {
+        static constexpr T value(std::size_t j) noexcept { return tab.b[j] - tab.bhat[Which][j]; }
+    };
+};
+
+}  // namespace detail
+
 }  // namespace odestep
 
 #endif
