@@ -130,6 +130,17 @@ ODESTEP_INLINE constexpr bool all_finite_under([[maybe_unused]] const std::array
     }
 }
 
+/// Where a step computes a result: the caller's object itself (InPlace: an unchecked step, nothing to roll
+/// back), or the step's local, copied to the caller's after the finiteness test.
+template <bool InPlace, class State>
+ODESTEP_INLINE constexpr State& result_target(State& local, State& caller) noexcept {
+    if constexpr (InPlace) {
+        return caller;
+    } else {
+        return local;
+    }
+}
+
 /// How assign copies a state: component by component, so that values still in registers go straight to
 /// memory (the default); or, where the build optimizes for size and the state has more than two components,
 /// as one block, the fewest and shortest instructions for a state built in memory (explicit_rk's new

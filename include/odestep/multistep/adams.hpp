@@ -126,7 +126,7 @@ public:
         detail::evaluate(f, t, y, fn);
         // Unchecked, y_{n+1} is computed into y itself (component n of the formula reads y[n] alone).
         State next;
-        State& out = target<!checks_finiteness>(next, y);
+        State& out = detail::result_target<!checks_finiteness>(next, y);
         if constexpr (pece) {
             State predicted;
             combine<predictor>(predicted, y, fn, fn);  // the second fn is not read: beta has no f_{n+1}
@@ -225,15 +225,6 @@ private:
     ODESTEP_INLINE void record(const State& fn) noexcept {
         detail::assign(history_[slot_], fn);
         slot_ = slot_ + 1 == M ? 0 : slot_ + 1;
-    }
-
-    template <bool InPlace>
-    ODESTEP_INLINE static State& target(State& local, State& caller) noexcept {
-        if constexpr (InPlace) {
-            return caller;
-        } else {
-            return local;
-        }
     }
 
     // The user's f, called through detail::evaluate, recording f(t, y) the first time the starter asks for it.

@@ -174,7 +174,7 @@ public:
         run_stages<false>(f, y, t, dt, k, next, std::make_index_sequence<S>{});
         constexpr std::size_t estimates = 0;
         constexpr bool in_place = !checks_finiteness && !next_from_stage<false>;
-        State& out = target<in_place>(next, y);
+        State& out = detail::result_target<in_place>(next, y);
         T total = -T(0);  // x + (-0) is x, exactly: the compiler drops that first addition
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
@@ -205,9 +205,9 @@ public:
         run_stages<true>(f, y, t, dt, k, next, std::make_index_sequence<S>{});
         constexpr std::size_t estimates = 1;
         constexpr bool in_place = !checks_finiteness && !next_from_stage<true>;
-        State& out = target<in_place>(next, y);
+        State& out = detail::result_target<in_place>(next, y);
         State err;
-        State& err_out = target<!checks_finiteness>(err, error);
+        State& err_out = detail::result_target<!checks_finiteness>(err, error);
         T total = -T(0);
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
@@ -240,11 +240,11 @@ public:
         run_stages<true>(f, y, t, dt, k, next, std::make_index_sequence<S>{});
         constexpr std::size_t estimates = 2;
         constexpr bool in_place = !checks_finiteness && !next_from_stage<true>;
-        State& out = target<in_place>(next, y);
+        State& out = detail::result_target<in_place>(next, y);
         State err;
         State err2;
-        State& err_out = target<!checks_finiteness>(err, error);
-        State& err2_out = target<!checks_finiteness>(err2, error2);
+        State& err_out = detail::result_target<!checks_finiteness>(err, error);
+        State& err2_out = detail::result_target<!checks_finiteness>(err2, error2);
         T total = -T(0);
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
@@ -282,16 +282,6 @@ private:
     // loop, which leaves it free to be vectorized. Unchecked: no sum.
     static constexpr bool fused_total = checks_finiteness && detail::optimizing_for_size;
     static constexpr bool separate_total = checks_finiteness && !detail::optimizing_for_size;
-    // Where a result is computed: the caller's object itself (InPlace: unchecked, nothing to roll back), or a
-    // local copied to it after the test.
-    template <bool InPlace>
-    ODESTEP_INLINE static State& target(State& local, State& caller) noexcept {
-        if constexpr (InPlace) {
-            return caller;
-        } else {
-            return local;
-        }
-    }
     ODESTEP_INLINE static void add_all(T& total, const State& v) noexcept {
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) total += v[n];
