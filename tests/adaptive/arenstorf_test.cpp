@@ -14,6 +14,7 @@
 #include <string>
 
 #include "support/counting.hpp"
+#include "support/order_fit.hpp"
 #include "support/problems.hpp"
 
 namespace {
@@ -150,8 +151,8 @@ TEST_CASE("Arenstorf: periodicity error against the tolerance, DP 5(4) and DOP85
     auto check = [](auto method, const char* name, double bound) {
         using Method = decltype(method);
         constexpr std::size_t K = 7;
-        std::array<double, K> logt{};
-        std::array<double, K> loge{};
+        std::array<double, K> tols{};
+        std::array<double, K> errors{};
         std::size_t previous_calls = 0;
         for (std::size_t i = 0; i < K; ++i) {
             const double tol = std::pow(10.0, -static_cast<double>(i + 5));
@@ -162,18 +163,10 @@ TEST_CASE("Arenstorf: periodicity error against the tolerance, DP 5(4) and DOP85
             CHECK(r.error <= bound * tol);
             CHECK(r.calls >= previous_calls);
             previous_calls = r.calls;
-            logt[i] = std::log10(tol);
-            loge[i] = std::log10(r.error);
+            tols[i] = tol;
+            errors[i] = r.error;
         }
-        double sx = 0, sy = 0, sxx = 0, sxy = 0;
-        for (std::size_t i = 0; i < K; ++i) {
-            sx += logt[i];
-            sy += loge[i];
-            sxx += logt[i] * logt[i];
-            sxy += logt[i] * loge[i];
-        }
-        const double k = static_cast<double>(K);
-        const double slope = (k * sxy - sx * sy) / (k * sxx - sx * sx);
+        const double slope = odestep_test::log_log_slope(tols, errors);  // least squares, log-log
         MESSAGE(std::string(name) << " slope " << slope);
         CHECK(slope >= 0.7);
         CHECK(slope <= 1.3);

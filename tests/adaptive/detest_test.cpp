@@ -19,6 +19,7 @@
 #include <type_traits>
 
 #include "support/counting.hpp"
+#include "support/order_fit.hpp"
 
 namespace {
 
@@ -285,20 +286,10 @@ run_result run(T tol) {
     return {r.status, worst, calls, engine.accepted_steps(), engine.rejected_steps()};
 }
 
-// Least-squares slope of log10(error) against log10(tol).
+// Least-squares slope of log(error) against log(tol) (tests/support/order_fit.hpp).
 template <std::size_t K>
 double fitted_slope(const std::array<double, K>& tols, const std::array<double, K>& errors) {
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (std::size_t i = 0; i < K; ++i) {
-        const double x = std::log10(tols[i]);
-        const double y = std::log10(errors[i]);
-        sx += x;
-        sy += y;
-        sxx += x * x;
-        sxy += x * y;
-    }
-    const double k = static_cast<double>(K);
-    return (k * sxy - sx * sy) / (k * sxx - sx * sx);
+    return odestep_test::log_log_slope(tols, errors);
 }
 
 // Fitted slope of error against tolerance: 1 for tolerance proportionality (global error ~ h^p and

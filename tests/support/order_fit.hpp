@@ -15,14 +15,14 @@
 
 namespace odestep_test {
 
-/// The least-squares slope of log(error) against log(h) over the first `count` errors (all when count is
-/// not given), errors[i] measured at h_i = h_0 / 2^i: the observed order. count must be at least 2.
+/// The least-squares slope of log(y) against log(x) over the first `count` points (all when count is not
+/// given; at least 2): the exponent p of y ~ C x^p.
 template <std::size_t K>
-double fitted_order(const std::array<double, K>& errors, std::size_t count = K) {
+double log_log_slope(const std::array<double, K>& xs, const std::array<double, K>& ys, std::size_t count = K) {
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     for (std::size_t i = 0; i < count; ++i) {
-        const double x = -std::log(2.0) * static_cast<double>(i);  // log(h_i / h_0)
-        const double y = std::log(errors[i]);
+        const double x = std::log(xs[i]);
+        const double y = std::log(ys[i]);
         sx += x;
         sy += y;
         sxx += x * x;
@@ -30,6 +30,15 @@ double fitted_order(const std::array<double, K>& errors, std::size_t count = K) 
     }
     const double n = static_cast<double>(count);
     return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+/// The least-squares slope of log(error) against log(h) over the first `count` errors (all when count is
+/// not given), errors[i] measured at h_i = h_0 / 2^i: the observed order. count must be at least 2.
+template <std::size_t K>
+double fitted_order(const std::array<double, K>& errors, std::size_t count = K) {
+    std::array<double, K> h{};
+    for (std::size_t i = 0; i < K; ++i) h[i] = std::ldexp(1.0, -static_cast<int>(i));  // h_i / h_0
+    return log_log_slope(h, errors, count);
 }
 
 /// The local slopes log2(errors[i] / errors[i + 1]) between neighbours of the first `count` errors (the
