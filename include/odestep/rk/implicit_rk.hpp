@@ -166,15 +166,16 @@ public:
             if (!detail::all_finite(f0)) return status::non_finite;
         }
         jacobian_t<State> jac;
-        // With the system's own Jacobian and no explicit first stage, f0 is never computed and jacobian_of
-        // does not read its fy: y stands in, so that no uninitialized array is passed on.
+        // With the system's own Jacobian and no explicit first stage, f0 is never computed and neither
+        // jacobian_of nor solve_diagonal reads fy: y stands in, so that no uninitialized array is passed on
+        // (g++ -O1 flagged f0 passed to solve_diagonal as maybe uninitialized).
         const State& fy = need_f0 ? f0 : y;
         const status js = detail::jacobian_of(f, t, y, fy, jac);
         if (js != status::ok) return js;
         State next;
         status s;
         if constexpr (diagonal) {
-            s = solve_diagonal(f, y, t, dt, f0, jac, next);
+            s = solve_diagonal(f, y, t, dt, fy, jac, next);
         } else {
             s = solve_coupled(f, y, t, dt, jac, next);
         }
