@@ -109,7 +109,8 @@ ODESTEP_INLINE constexpr bool all_finite(const std::array<T, N>& y, const More&.
 /// value the step tests; the step runs the exact test, each_finite, only when this fails), the constant
 /// true for one that does not, which makes the step's `!finite_sum_under(total) && !exact` false at compile
 /// time: no sum, no exact test, and the results written where they go, with no copy kept for a roll-back
-/// (the same arithmetic otherwise, so a finite run gives the same state bit for bit).
+/// (the same arithmetic otherwise: a finite run gives the same state, bit for bit unless the compiler fuses
+/// different products into multiply-adds in the two forms).
 template <class Check, class T>
 ODESTEP_INLINE constexpr bool finite_sum_under([[maybe_unused]] T total) noexcept {
     if constexpr (Check::checks_finiteness) {
