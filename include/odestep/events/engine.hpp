@@ -261,15 +261,8 @@ private:
                 values g_hi = g_end;
                 if (k < pieces) {
                     hi = h * static_cast<T>(k) / static_cast<T>(pieces);
-                    hi_state = start;
                     hi_refs = pointers(hi_state);
-                    status ps = status::ok;
-                    if constexpr (interpolates) {
-                        ps = state_at(scratch, f, start, y, d, t_s, hi, h, t_end, hi_state);
-                    } else {  // (as restep, on hi_refs)
-                        reset_if_any(scratch);
-                        ps = call_step(scratch, f, hi_refs, t_s, hi, seq{});
-                    }
+                    const status ps = state_at(scratch, f, start, y, d, t_s, hi, h, t_end, hi_state);
                     if (ps != status::ok) return fail(lo_state, at(lo), ps);
                     if (!evaluate_all(set, at(hi), hi_refs, g_hi))
                         return fail(lo_state, at(lo), status::non_finite_event);
