@@ -2,9 +2,9 @@
 # The C API's tests (included by tests/CMakeLists.txt when ODESTEP_C_API is on), on the host and, cross-
 # compiled, on the emulated Cortex-M cores:
 #   odestep_c_tests      tests/c/capi_test.c, C99 with -Wall -Wextra -Wpedantic -Werror: closed forms, bad
-#                        input, roll-back
-#   odestep_c_agreement  tests/c/agreement_test.cpp: the status values (static_assert) and C runs equal to
-#                        the C++ ones bit for bit
+#                        input, roll-back, every status a C call can return
+#   odestep_c_agreement  tests/c/agreement_test.cpp: the status names (src/capi.cpp checks the values at
+#                        compile time) and C runs equal to the C++ ones bit for bit
 set(ODESTEP_C_WARNINGS -Wall -Wextra -Wpedantic -Wshadow -Wdouble-promotion -Werror)
 
 add_executable(odestep_c_tests ${CMAKE_CURRENT_LIST_DIR}/capi_test.c)

@@ -730,6 +730,98 @@ static void test_verlet_kept(void) {
     CHECK(x == xl && v == vl);
 }
 
+/* ---- every status the C API returns, each reached by a call whose cause is plain, and told apart by value */
+
+static double after_first_d(double t, const double* y, void* ctx) {
+    (void)y;
+    (void)ctx;
+    return t - 0.25;
+}
+static double after_second_d(double t, const double* y, void* ctx) {
+    (void)y;
+    (void)ctx;
+    return t - 0.75;
+}
+static odestep_event_result proceed_d(double t, double* y, void* ctx) {
+    (void)t;
+    (void)y;
+    (void)ctx;
+    return ODESTEP_PROCEED;
+}
+
+/* The statuses a C method can give, one call each (the C++ statuses no_convergence, singular_matrix,
+ * substep_limit and step_too_small come from the implicit, Rosenbrock and adaptive steppers, which the C API
+ * does not offer: no C call returns them, and the names below are all a C caller can meet of them). */
+static void test_every_status(void) {
+    odestep_stepper_d s;
+    odestep_stepper_d adams;
+    odestep_event_loop_d loop;
+    double k = 1.0;
+    const odestep_system_d sys = {decay_d, &k, 3};
+    const odestep_system_d ball = {ball_d, NULL, 2};
+    const odestep_system_d null_f = {NULL, NULL, 3};
+    poison p = {0, 1};
+    const odestep_system_d poisoned = {poisoned_d, &p, 2};
+    odestep_event_d events[2];
+    odestep_event_limits one_firing = {0, 1, 0};
+    odestep_tick_d tick;
+    double y[3] = {1.0, 2.0, 3.0};
+    double h[2] = {1.0, 0.0};
+    odestep_run_d run;
+    (void)memset(&tick, 0, sizeof tick);
+    (void)memset(events, 0, sizeof events);
+    CHECK(odestep_stepper_init_d(&s, &odestep_rk4_d) == ODESTEP_OK);
+    CHECK(odestep_stepper_init_d(&adams, &odestep_ab4_d) == ODESTEP_OK);
+
+    CHECK(odestep_step_d(&s, &sys, y, 0.0, 0.1) == ODESTEP_OK);
+    CHECK(odestep_step_d(&s, &sys, y, INFINITY, 0.1) == ODESTEP_INVALID_TIME);
+    CHECK(odestep_step_d(&s, &sys, y, 0.0, 0.0) == ODESTEP_INVALID_STEP);
+    CHECK(odestep_integrate_d(&s, &sys, y, 0.0, 1.0, -0.1, NULL, NULL, &run) == ODESTEP_WRONG_DIRECTION);
+    /* 1e300 / 1e-300 steps: past the 2^62 the step counter allows (detail/grid_clock.hpp, plan_run) */
+    CHECK(odestep_integrate_d(&s, &sys, y, 0.0, 1e300, 1e-300, NULL, NULL, &run) == ODESTEP_TOO_MANY_STEPS);
+    CHECK(run.steps == 0 && run.t == 0.0);
+    /* the first evaluation is NaN */
+    CHECK(odestep_step_d(&s, &poisoned, h, 0.0, 0.1) == ODESTEP_NON_FINITE);
+    CHECK(p.calls >= 1 && h[0] == 1.0 && h[1] == 0.0);
+    /* AB4 needs one dt for its whole history: 1 / 0.3 ends on a shorter step */
+    CHECK(odestep_integrate_d(&adams, &sys, y, 0.0, 1.0, 0.3, NULL, NULL, &run) == ODESTEP_STEP_MISMATCH);
+    CHECK(odestep_step_d(&s, &null_f, y, 0.0, 0.1) == ODESTEP_INVALID_SETTING);
+
+    /* the event loop: a negative tolerance; a g that is NaN at the start */
+    events[0].g = after_first_d;
+    events[0].direction = ODESTEP_RISING;
+    events[0].tolerance = -1.0;
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, events, 1, NULL, &ball, h, 0.0, 1.0) ==
+          ODESTEP_INVALID_TOLERANCE);
+    events[0].tolerance = 0.0;
+    events[0].g = nan_g_d;
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, events, 1, NULL, &ball, h, 0.0, 1.0) ==
+          ODESTEP_NON_FINITE_EVENT);
+    /* a terminal event at t = 0.25 inside the tick [0, 1] */
+    events[0].g = after_first_d;
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, events, 1, NULL, &ball, h, 0.0, 1.0) == ODESTEP_OK);
+    CHECK(odestep_event_loop_tick_d(&loop, &ball, h, &tick) == ODESTEP_STOPPED_BY_EVENT);
+    CHECK_CLOSE(tick.t, 0.25, 1e-12);
+    /* two events that proceed, at t = 0.25 and 0.75, in a tick that allows one firing */
+    events[0].action = proceed_d;
+    events[1].g = after_second_d;
+    events[1].direction = ODESTEP_RISING;
+    events[1].action = proceed_d;
+    h[0] = 1.0;
+    h[1] = 0.0;
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, events, 2, &one_firing, &ball, h, 0.0, 1.0) == ODESTEP_OK);
+    CHECK(odestep_event_loop_tick_d(&loop, &ball, h, &tick) == ODESTEP_EVENT_LIMIT);
+    CHECK(tick.fired == 1 && tick.firings[0].event == 0);
+
+    /* each value has its own name */
+    CHECK(strcmp(odestep_status_name(ODESTEP_TOO_MANY_STEPS), "too_many_steps") == 0);
+    CHECK(strcmp(odestep_status_name(ODESTEP_EVENT_LIMIT), "event_limit") == 0);
+    CHECK(strcmp(odestep_status_name(ODESTEP_NO_CONVERGENCE), "no_convergence") == 0);
+    CHECK(strcmp(odestep_status_name(ODESTEP_SINGULAR_MATRIX), "singular_matrix") == 0);
+    CHECK(strcmp(odestep_status_name(ODESTEP_SUBSTEP_LIMIT), "substep_limit") == 0);
+    CHECK(strcmp(odestep_status_name(ODESTEP_STEP_TOO_SMALL), "step_too_small") == 0);
+}
+
 int main(void) {
     test_rk4_decay();
     test_euler_decay();
@@ -752,6 +844,7 @@ int main(void) {
     test_event_nan();
     test_newton_events();
     test_verlet_kept();
+    test_every_status();
     (void)printf("c api tests: %d failed checks\n", check_failures);
     return check_failures == 0 ? 0 : 1;
 }
