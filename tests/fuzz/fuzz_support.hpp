@@ -3,7 +3,10 @@
 // values come from the input, and the README's promises as checks that abort (a finding) when broken.
 //
 // The input is read front to back; past its end every byte reads as 0, so that any input is a whole
-// program. A number is a kind byte and its payload: 0 one of the special values below, 1 a small multiple
+// program. Each read is its own statement (or an element of a braced list, which C++ evaluates left to right),
+// never two reads in one function call's arguments or one operator's operands, whose order C++ leaves
+// unspecified: an input then means the same under every compiler (tests/fuzz/replay_main.cpp replays the
+// corpus under g++ and clang). A number is a kind byte and its payload: 0 one of the special values below, 1 a small multiple
 // of 1/8, 2 the raw bits of T, 3 a fraction in [0, 1). tests/fuzz/make_seeds.py writes inputs in this form.
 #ifndef ODESTEP_TESTS_FUZZ_SUPPORT_HPP
 #define ODESTEP_TESTS_FUZZ_SUPPORT_HPP
@@ -43,7 +46,13 @@ public:
     std::uint8_t byte() { return at_ < size_ ? data_[at_++] : std::uint8_t(0); }
     std::size_t index(std::size_t n) { return n == 0 ? 0 : byte() % n; }
     bool flag() { return (byte() & 1U) != 0; }
-    std::uint16_t u16() { return static_cast<std::uint16_t>(byte() | (byte() << 8)); }
+    // One read per statement: the operands of | (and a function's arguments) are evaluated in an unspecified
+    // order, so byte() | (byte() << 8) decodes differently under g++ and clang.
+    std::uint16_t u16() {
+        const unsigned low = byte();
+        const unsigned high = byte();
+        return static_cast<std::uint16_t>(low | (high << 8));
+    }
     std::uint64_t u64() {
         std::uint64_t v = 0;
         for (int i = 0; i < 8; ++i) v |= static_cast<std::uint64_t>(byte()) << (8 * i);
@@ -362,7 +371,10 @@ T draw_t1(reader& in, T t0, T dt) {
     switch (in.index(3)) {
         case 0: return in.number<T>();
         case 1: return t0 + T(in.byte() % 64) * dt;
-        default: return t0 + (T(in.byte() % 64) + in.number<T>()) * dt;
+        default: {
+            const T whole = T(in.byte() % 64);  // read before the fraction: one read per statement (see u16)
+            return t0 + (whole + in.number<T>()) * dt;
+        }
     }
 }
 
