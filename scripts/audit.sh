@@ -23,7 +23,8 @@
 #     (between its bench-m4f markers). Fails only if the image does not build or run or a row fails its check.
 #
 # Usage: scripts/audit.sh            Exits non-zero if a check fails. Needs arm-none-eabi-g++ (newlib) and
-# awk; qemu-system-arm to run the firmware image (skipped without it). Installs nothing.
+# awk; qemu-system-arm to run the firmware image (skipped without it). Installs nothing. Compiles JOBS units at
+# a time (default: nproc), every image and unit first, then checks them.
 set -uo pipefail
 cd "$(dirname "$0")/.." || exit 2
 root=$PWD
@@ -82,6 +83,49 @@ check_image() {
   fi
   echo "| $core | \`$flags\` | $text | $data | $bss | ${runtime:-none} | ${doubles:-none} | $run |" >> "$report"
 }
+# The images of sections 1 and 1b, built `audit_jobs` at a time before they are checked (an image that does not
+# build or link is absent; its log says why).
+audit_jobs=${JOBS:-$(nproc 2> /dev/null || echo 2)}
+pool_wait() {  # blocks until fewer than audit_jobs background jobs run
+  while (($(jobs -rp | wc -l) >= audit_jobs)); do wait -n; done
+}
+build_firmware_loop() {  # build_firmware_loop CORE
+  local cpu script image=$out/firmware_loop-$1.elf
+  read -r -a cpu <<< "$(setting "$1" ODESTEP_TARGET_CPU_FLAGS)"
+  script=$(setting "$1" ODESTEP_TARGET_LINKER_SCRIPT)
+  rm -f "$image"
+  arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" -Os -DODESTEP_BOARD_BARE=1 \
+    "$root/examples/firmware_loop.cpp" "$board/startup.cpp" "$board/syscalls.cpp" \
+    -nostartfiles -L"$board" -T"$board/$script" -Wl,--gc-sections "${no_alloc[@]}" -o "$image" \
+    2> "$out/firmware_loop-$1.log" || rm -f "$image"
+}
+build_c_firmware() {  # build_c_firmware CORE
+  local cpu script objects=$out/c_firmware-$1 image=$out/c_firmware-$1.elf ok=1 src
+  read -r -a cpu <<< "$(setting "$1" ODESTEP_TARGET_CPU_FLAGS)"
+  script=$(setting "$1" ODESTEP_TARGET_LINKER_SCRIPT)
+  rm -rf "$image" "$objects" "$objects.log"
+  mkdir -p "$objects"
+  for src in capi capi_float capi_events_float; do
+    arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" -Os -ffp-contract=off -c "$root/src/$src.cpp" \
+      -o "$objects/$src.o" 2>> "$objects.log" || ok=0
+  done
+  arm-none-eabi-gcc "${cpu[@]}" -std=c99 -Os -ffunction-sections -fdata-sections -Wall -Wextra -Wpedantic -Wconversion \
+    -Wshadow -Wdouble-promotion -Werror -I"$root/include" -c "$root/examples/c_firmware.c" -o "$objects/main.o" \
+    2>> "$objects.log" || ok=0
+  if ((ok == 1)); then
+    arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" -Os -DODESTEP_BOARD_BARE=1 "$objects"/*.o "$board/startup.cpp" \
+      "$board/syscalls.cpp" -nostartfiles -L"$board" -T"$board/$script" -Wl,--gc-sections "${no_alloc[@]}" -lm \
+      -o "$image" 2>> "$objects.log" || rm -f "$image"
+  fi
+}
+for core in cortex-m0plus cortex-m3 cortex-m4f cortex-m33; do
+  pool_wait
+  build_firmware_loop "$core" &
+  pool_wait
+  build_c_firmware "$core" &
+done
+wait
+
 {
   echo "# odestep firmware audit"
   echo
@@ -96,12 +140,8 @@ check_image() {
 for core in cortex-m0plus cortex-m3 cortex-m4f cortex-m33; do
   read -r -a cpu <<< "$(setting "$core" ODESTEP_TARGET_CPU_FLAGS)"
   machine=$(setting "$core" ODESTEP_TARGET_QEMU_MACHINE)
-  script=$(setting "$core" ODESTEP_TARGET_LINKER_SCRIPT)
   image=$out/firmware_loop-$core.elf
-  if ! arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" -Os -DODESTEP_BOARD_BARE=1 \
-       "$root/examples/firmware_loop.cpp" "$board/startup.cpp" "$board/syscalls.cpp" \
-       -nostartfiles -L"$board" -T"$board/$script" -Wl,--gc-sections "${no_alloc[@]}" -o "$image" \
-       2> "$out/firmware_loop-$core.log"; then
+  if [[ ! -f "$image" ]]; then
     cat "$out/firmware_loop-$core.log" >&2
     fail "$core: firmware_loop does not build or link without an allocator"
     echo "| $core | \`${cpu[*]}\` | - | - | - | link FAILED | - | - |" >> "$report"
@@ -121,24 +161,9 @@ done
 for core in cortex-m0plus cortex-m3 cortex-m4f cortex-m33; do
   read -r -a cpu <<< "$(setting "$core" ODESTEP_TARGET_CPU_FLAGS)"
   machine=$(setting "$core" ODESTEP_TARGET_QEMU_MACHINE)
-  script=$(setting "$core" ODESTEP_TARGET_LINKER_SCRIPT)
   objects=$out/c_firmware-$core
   image=$out/c_firmware-$core.elf
-  mkdir -p "$objects"
-  ok=1
-  for src in capi capi_float capi_events_float; do
-    arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" -Os -ffp-contract=off -c "$root/src/$src.cpp" \
-      -o "$objects/$src.o" 2>> "$objects.log" || ok=0
-  done
-  arm-none-eabi-gcc "${cpu[@]}" -std=c99 -Os -ffunction-sections -fdata-sections -Wall -Wextra -Wpedantic -Wconversion \
-    -Wshadow -Wdouble-promotion -Werror -I"$root/include" -c "$root/examples/c_firmware.c" -o "$objects/main.o" \
-    2>> "$objects.log" || ok=0
-  if ((ok == 1)); then
-    arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" -Os -DODESTEP_BOARD_BARE=1 "$objects"/*.o "$board/startup.cpp" \
-      "$board/syscalls.cpp" -nostartfiles -L"$board" -T"$board/$script" -Wl,--gc-sections "${no_alloc[@]}" -lm \
-      -o "$image" 2>> "$objects.log" || ok=0
-  fi
-  if ((ok == 0)); then
+  if [[ ! -f "$image" ]]; then
     cat "$objects.log" >&2
     fail "$core: c_firmware does not build or link without an allocator"
     echo "| $core | \`${cpu[*]}\` | - | - | - | link FAILED | - | - |" >> "$report"
@@ -283,31 +308,49 @@ measure() {
 
 declare -A text_of stack_of
 helpers_seen=""
+# Every unit of every (core, type, optimisation) first, compiled `audit_jobs` at a time (they are independent); then
+# the checks and measurements, tag by tag, on the objects. A unit that does not compile leaves no object.
+compile_unit() {  # compile_unit TAG KIND SOURCE CPU_FLAGS OPT TYPE: $out/KIND-TAG.o and .ci, or no object
+  local object=$out/$2-$1.o
+  read -r -a flags <<< "$4"
+  arm-none-eabi-g++ "${flags[@]}" "${common_flags[@]}" "$5" -DAUDIT_T="$6" -fstack-usage -fcallgraph-info=su \
+    -c "$3" -o "$object" 2> "$out/$2-$1.log" || rm -f "$object"
+}
 for core in cortex-m4f cortex-m0plus; do
-  read -r -a cpu <<< "$(setting "$core" ODESTEP_TARGET_CPU_FLAGS)"
+  cpu_flags=$(setting "$core" ODESTEP_TARGET_CPU_FLAGS)
+  for type in float double; do
+    for opt in -Os -O2; do
+      tag=$core-$type$opt
+      for kind in step newton events stiff; do
+        case $kind in
+          step) source=$unit ;; newton) source=$newton_unit ;; events) source=$event_unit ;; stiff) source=$stiff_unit ;;
+        esac
+        rm -f "$out/$kind-$tag.o"
+        pool_wait
+        compile_unit "$tag" "$kind" "$source" "$cpu_flags" "$opt" "$type" &
+      done
+    done
+  done
+done
+wait
+
+for core in cortex-m4f cortex-m0plus; do
   for type in float double; do
     for opt in -Os -O2; do
       tag=$core-$type$opt
       object=$out/step-$tag.o
-      # The Newtonian unit compiles in the background, beside the step unit.
       newton_object=$out/newton-$tag.o
-      rm -f "$newton_object"
-      arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" "$opt" -DAUDIT_T="$type" -fstack-usage \
-        -fcallgraph-info=su -c "$newton_unit" -o "$newton_object" 2> "$out/newton-$tag.log" &
-      newton_job=$!
-      step_compiled=1
-      if ! arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" "$opt" -DAUDIT_T="$type" -fstack-usage \
-           -fcallgraph-info=su -c "$unit" -o "$object" 2> "$out/step-$tag.log"; then
-        cat "$out/step-$tag.log" >&2
-        fail "$tag: the step unit does not compile"
-        step_compiled=0
-      fi
-      if ! wait "$newton_job"; then
+      events_object=$out/events-$tag.o
+      stiff_object=$out/stiff-$tag.o
+      if [[ ! -f "$newton_object" ]]; then
         cat "$out/newton-$tag.log" >&2
         fail "$tag: the Newtonian step unit does not compile"
-        rm -f "$newton_object"
       fi
-      ((step_compiled)) || continue
+      if [[ ! -f "$object" ]]; then
+        cat "$out/step-$tag.log" >&2
+        fail "$tag: the step unit does not compile"
+        continue
+      fi
       stepper_objects=("$object")
       [[ -f "$newton_object" ]] && stepper_objects+=("$newton_object")
       called=$(arm-none-eabi-nm -u "${stepper_objects[@]}" | awk 'NF > 1 {print $NF}' | sort -u)
@@ -318,18 +361,13 @@ for core in cortex-m4f cortex-m0plus; do
         [[ -z "$doubles" ]] || fail "$tag: float steps call double-precision routines: $doubles"
         echo "$tag ${doubles:-none}" >> "$out/float-doubles.txt"
       fi
-      events_object=$out/events-$tag.o
-      if ! arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" "$opt" -DAUDIT_T="$type" -fstack-usage \
-           -fcallgraph-info=su -c "$event_unit" -o "$events_object" 2> "$out/events-$tag.log"; then
+      if [[ ! -f "$events_object" ]]; then
         cat "$out/events-$tag.log" >&2
         fail "$tag: the event unit does not compile"
       fi
-      stiff_object=$out/stiff-$tag.o
-      if ! arm-none-eabi-g++ "${cpu[@]}" "${common_flags[@]}" "$opt" -DAUDIT_T="$type" -fstack-usage \
-           -fcallgraph-info=su -c "$stiff_unit" -o "$stiff_object" 2> "$out/stiff-$tag.log"; then
+      if [[ ! -f "$stiff_object" ]]; then
         cat "$out/stiff-$tag.log" >&2
         fail "$tag: the implicit step unit does not compile"
-        rm -f "$stiff_object"
       elif [[ $type == float ]]; then
         stiff_doubles=$(arm-none-eabi-nm -u "$stiff_object" | awk 'NF > 1 {print $NF}' | grep -E '^__aeabi_d' | tr '\n' ' ')
         [[ -z "$stiff_doubles" ]] || fail "$tag: float implicit steps call double-precision routines: $stiff_doubles"

@@ -4,7 +4,7 @@
 # UndefinedBehaviorSanitizer) in their own build directory, build/fuzz/, and runs them. Each target checks the
 # README's promises as properties and aborts on a broken one (docs/hardening.md lists them).
 #
-#   scripts/fuzz.sh --quick     the gate: every target for 15 s (about a minute in all, after the build) on the
+#   scripts/fuzz.sh --quick     the gate: every target for 15 s (JOBS at a time: 45 s on 2 cores) on the
 #                               committed corpus, tests/fuzz/corpus/<target>/, whose regression-* inputs are
 #                               the defects found so far; fails on any finding
 #   scripts/fuzz.sh SECONDS     all targets for SECONDS in all (split evenly, one after the other), going on past
@@ -17,12 +17,14 @@
 # widen coverage go to build/fuzz/corpus/<target>/, never into the committed corpus.
 #
 # Environment: CXX_FUZZ (default clang++), FUZZ_BUILD_DIR (default build/fuzz), FUZZ_TIMEOUT (seconds one input may
-# take before it is a hang, default 10), FUZZ_TARGETS (a space-separated subset of the targets). Needs clang++ and its libFuzzer runtime (Debian: clang, libclang-rt-dev).
+# take before it is a hang, default 10), FUZZ_TARGETS (a space-separated subset of the targets), JOBS (--quick: targets
+# fuzzed at a time, and compilations at a time; default nproc). Needs clang++ and its libFuzzer runtime (Debian: clang, libclang-rt-dev).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
 
 read -r -a targets <<< "${FUZZ_TARGETS:-fuzz_loops fuzz_loops_newtonian fuzz_steps fuzz_events fuzz_adaptive fuzz_c_api}"
+jobs=${JOBS:-$(nproc 2> /dev/null || echo 2)}
 quick_seconds=15
 cxx=${CXX_FUZZ:-clang++}
 dir=${FUZZ_BUILD_DIR:-$root/build/fuzz}
@@ -77,8 +79,8 @@ for t in "${targets[@]}"; do
   ("$cxx" "${flags[@]}" "$root/tests/fuzz/$t.cpp" "${extra[@]}" -o "$dir/$t.new" > "$dir/$t.build.log" 2>&1 &&
     mv "$dir/$t.new" "$dir/$t") &
   pids+=($!)
-  # two compilations at a time
-  if [ ${#pids[@]} -ge 2 ]; then
+  # JOBS compilations at a time
+  if [ ${#pids[@]} -ge "$jobs" ]; then
     wait "${pids[0]}" || built=1
     pids=("${pids[@]:1}")
   fi
@@ -128,9 +130,17 @@ if [ "$mode" = --known ]; then
 fi
 
 if [ "$mode" = --quick ]; then
+  # The targets run side by side, as many at a time as there are cores (each fuzzes on one core), and are
+  # reported in order once all have ended.
   for t in "${targets[@]}"; do
     : > "$dir/$t.runs"
-    if fuzz_one "$t" "$quick_seconds"; then
+    rm -f "$dir/$t.status"
+    while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
+    (fuzz_one "$t" "$quick_seconds"; echo $? > "$dir/$t.status") &
+  done
+  wait
+  for t in "${targets[@]}"; do
+    if [ "$(cat "$dir/$t.status" 2> /dev/null)" = 0 ]; then
       echo "fuzz: ok   $t: $(cat "$dir/$t.runs") executions in ${quick_seconds} s, no finding"
       passed=$((passed + 1))
     else

@@ -4,7 +4,8 @@
 #   Cortex-M3 (mps2-an385), M4F (mps2-an386), M7 (mps2-an500), M33 (mps2-an505), M55 (mps3-an547): build + run
 #   Cortex-M0+: build and size only (QEMU has no Cortex-M0+ board)
 # with the CMake presets of the same names (build/<preset>/). Exits non-zero if any core fails to configure,
-# build or pass; the others still run. Prints the time each core took.
+# build or pass; the others still run. A core's QEMU run overlaps the next core's build. Prints the time each
+# core's build and run took.
 #
 # Usage: scripts/test-targets.sh [preset...]      (default: all six)
 # Environment: JOBS (parallel build jobs, default: nproc), ODESTEP_TARGET_CONFIGURE_ARGS (extra arguments
@@ -42,8 +43,22 @@ is_build_only() {
   return 1
 }
 
-summary=()
+# Each core's QEMU run goes on in the background while the next core builds (the runs use one core each, the
+# builds both); a core's run waits for the previous core's run, so that at most one run and one build share
+# the machine. Each run's output is printed, whole, when it ends.
+declare -A result_of build_of tests_of
 failed=()
+run_pid=""
+run_preset=""
+mkdir -p build
+finish_run() {  # waits for the run in the background, if any, and records its result
+  [[ -n "$run_pid" ]] || return 0
+  if ! wait "$run_pid"; then result_of[$run_preset]="tests FAILED"; fi
+  echo "=== ${run_preset}: run under QEMU ($(cat "build/${run_preset}.qemu-seconds" 2> /dev/null || echo '?') s)"
+  cat "build/${run_preset}.qemu.log"
+  tests_of[$run_preset]=$(cat "build/${run_preset}.qemu-seconds" 2> /dev/null || echo -)
+  run_pid=""
+}
 total_start=$SECONDS
 for preset in "${presets[@]}"; do
   echo "=== ${preset}: configure and build"
@@ -54,28 +69,37 @@ for preset in "${presets[@]}"; do
   elif ! cmake --build --preset "$preset" --parallel "$jobs"; then
     result="build FAILED"
   fi
-  build_seconds=$((SECONDS - start))
-
-  test_seconds=-
-  if [[ "$result" == ok ]]; then
-    if is_build_only "$preset"; then
-      result="ok (built only)"
-      image=build/$preset/tests/odestep_target_tests.elf
-      if [[ -f "$image" ]] && command -v arm-none-eabi-size > /dev/null 2>&1; then
-        echo "=== ${preset}: size of the test image (not run: no QEMU board)"
-        arm-none-eabi-size "$image"
-      fi
-    else
-      echo "=== ${preset}: run under QEMU"
-      start=$SECONDS
-      if ! ctest --preset "$preset" --parallel "$jobs"; then
-        result="tests FAILED"
-      fi
-      test_seconds=$((SECONDS - start))
+  build_of[$preset]=$((SECONDS - start))
+  tests_of[$preset]=-
+  result_of[$preset]=$result
+  [[ "$result" == ok ]] || continue
+  if is_build_only "$preset"; then
+    result_of[$preset]="ok (built only)"
+    image=build/$preset/tests/odestep_target_tests.elf
+    if [[ -f "$image" ]] && command -v arm-none-eabi-size > /dev/null 2>&1; then
+      echo "=== ${preset}: size of the test image (not run: no QEMU board)"
+      arm-none-eabi-size "$image"
     fi
+    continue
   fi
-  [[ "$result" == ok* ]] || failed+=("$preset")
-  summary+=("$(printf '%-14s %-18s build %4ss  tests %4ss' "$preset" "$result" "$build_seconds" "$test_seconds")")
+  finish_run
+  run_preset=$preset
+  (
+    begin=$SECONDS
+    ctest --preset "$preset" --parallel "$jobs" > "build/${preset}.qemu.log" 2>&1
+    status=$?
+    echo $((SECONDS - begin)) > "build/${preset}.qemu-seconds"
+    exit $status
+  ) &
+  run_pid=$!
+done
+finish_run
+
+summary=()
+for preset in "${presets[@]}"; do
+  [[ "${result_of[$preset]}" == ok* ]] || failed+=("$preset")
+  summary+=("$(printf '%-14s %-18s build %4ss  tests %4ss' "$preset" "${result_of[$preset]}" "${build_of[$preset]}" \
+    "${tests_of[$preset]}")")
 done
 
 echo

@@ -6,22 +6,25 @@
 # same three ways, with the project's toolchain file, and find_package once more under a toolchain that
 # searches packages only in its sysroot (CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY), with odestep_DIR given.
 # Usage: check_consumers.sh SOURCE_DIR WORK_DIR CXX_COMPILER
+# After the install, the consumers build side by side (JOBS at a time, default nproc), each into its own log;
+# a failure prints its log.
 set -euo pipefail
 src=$1 work=$2 cxx=$3
+jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 rm -rf "$work" && mkdir -p "$work"
 consumer="$src/tests/package/consumer"
 
 cmake -S "$src" -B "$work/odestep-build" -DCMAKE_CXX_COMPILER="$cxx" -DODESTEP_BUILD_TESTS=OFF \
       -DODESTEP_BUILD_EXAMPLES=OFF -DODESTEP_INSTALL=ON >/dev/null
-cmake --build "$work/odestep-build" >/dev/null  # the C API's static library (odestep::odestep_c)
+cmake --build "$work/odestep-build" --parallel "$jobs" >/dev/null  # the C API's static library (odestep::odestep_c)
 cmake --install "$work/odestep-build" --prefix "$work/prefix" >/dev/null
 test -f "$work/prefix/include/odestep/odestep.hpp"
 test -f "$work/prefix/share/cmake/odestep/odestepConfig.cmake"
 test -f "$work/prefix/include/odestep/odestep.h"
 ls "$work"/prefix/lib*/libodestep_c.a >/dev/null
 
-for mode in find_package add_subdirectory FetchContent; do
-  build="$work/$mode"
+host_consumer() {  # host_consumer MODE
+  local mode=$1 build="$work/$1"
   cmake -S "$consumer" -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DODESTEP_MODE="$mode" \
         -DODESTEP_SOURCE="$src" -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
   cmake --build "$build" >/dev/null
@@ -32,43 +35,66 @@ for mode in find_package add_subdirectory FetchContent; do
     exit 1
   fi
   echo "ok: $mode"
-done
+}
 
 # The README's FetchContent snippet, as written: the first ```cmake block under "## Getting it", in a project
 # whose executable is `app`, fetched from this repository by branch and then pinned to its commit.
-readme="$work/readme"
-mkdir -p "$readme"
-snippet=$(awk '/^## Getting it/ { on = 1 } on && /^```cmake$/ { grab = 1; next } grab && /^```$/ { exit } grab' "$src/README.md")
-[ -n "$snippet" ] || { echo "FAIL: no cmake block under '## Getting it' in README.md"; exit 1; }
-cp "$consumer/main.cpp" "$readme/main.cpp"
-pins=("$(git -C "$src" rev-parse HEAD)")
-git -C "$src" rev-parse --verify -q main >/dev/null && pins=(main "${pins[@]}")
-for pin in "${pins[@]}"; do
-  { echo "cmake_minimum_required(VERSION 3.14)"; echo "project(readme_snippet LANGUAGES CXX)";
-    echo "add_executable(app main.cpp)"; echo "$snippet" | sed "s/GIT_TAG        main/GIT_TAG        $pin/"; } > "$readme/CMakeLists.txt"
-  rm -rf "$readme/build"
-  cmake -S "$readme" -B "$readme/build" -DCMAKE_CXX_COMPILER="$cxx" -DODESTEP_REPOSITORY="$src" >/dev/null
-  cmake --build "$readme/build" >/dev/null
-  "$readme/build/app" >/dev/null
-  echo "ok: the README's FetchContent snippet, GIT_TAG $pin"
-done
+readme_snippet() {
+  local readme="$work/readme" snippet pins pin
+  mkdir -p "$readme"
+  snippet=$(awk '/^## Getting it/ { on = 1 } on && /^```cmake$/ { grab = 1; next } grab && /^```$/ { exit } grab' "$src/README.md")
+  [ -n "$snippet" ] || { echo "FAIL: no cmake block under '## Getting it' in README.md"; exit 1; }
+  cp "$consumer/main.cpp" "$readme/main.cpp"
+  pins=("$(git -C "$src" rev-parse HEAD)")
+  git -C "$src" rev-parse --verify -q main >/dev/null && pins=(main "${pins[@]}")
+  for pin in "${pins[@]}"; do
+    { echo "cmake_minimum_required(VERSION 3.14)"; echo "project(readme_snippet LANGUAGES CXX)";
+      echo "add_executable(app main.cpp)"; echo "$snippet" | sed "s/GIT_TAG        main/GIT_TAG        $pin/"; } > "$readme/CMakeLists.txt"
+    rm -rf "$readme/build"
+    cmake -S "$readme" -B "$readme/build" -DCMAKE_CXX_COMPILER="$cxx" -DODESTEP_REPOSITORY="$src" >/dev/null
+    cmake --build "$readme/build" >/dev/null
+    "$readme/build/app" >/dev/null
+    echo "ok: the README's FetchContent snippet, GIT_TAG $pin"
+  done
+}
 
-command -v arm-none-eabi-g++ >/dev/null || { echo "skipped: the cross-compiled consumer (no arm-none-eabi-g++)"; exit 0; }
 firmware="$src/tests/package/firmware_consumer"
 toolchain="$src/toolchains/cortex-m4f.cmake"
-for mode in find_package add_subdirectory FetchContent; do
-  build="$work/firmware-$mode"
+firmware_consumer() {  # firmware_consumer MODE
+  local mode=$1 build="$work/firmware-$1"
   cmake --no-warn-unused-cli -S "$firmware" -B "$build" -DCMAKE_TOOLCHAIN_FILE="$toolchain" -DODESTEP_MODE="$mode" \
         -DODESTEP_SOURCE="$src" -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
   cmake --build "$build" >/dev/null
   test -f "$build/libfirmware.a"
   echo "ok: cross-compiled firmware, $mode"
-done
+}
 # A user's toolchain file that keeps package search in its sysroot: odestep_DIR points at the package.
-strict="$work/strict-toolchain.cmake"
-printf 'include(%s)\nset(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)\n' "$toolchain" > "$strict"
-build="$work/firmware-strict"
-cmake -S "$firmware" -B "$build" -DCMAKE_TOOLCHAIN_FILE="$strict" -DODESTEP_MODE=find_package \
-      -Dodestep_DIR="$work/prefix/share/cmake/odestep" >/dev/null
-cmake --build "$build" >/dev/null
-echo "ok: cross-compiled firmware, find_package with odestep_DIR under CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY"
+firmware_strict() {
+  local strict="$work/strict-toolchain.cmake" build
+  printf 'include(%s)\nset(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)\n' "$toolchain" > "$strict"
+  build="$work/firmware-strict"
+  cmake -S "$firmware" -B "$build" -DCMAKE_TOOLCHAIN_FILE="$strict" -DODESTEP_MODE=find_package \
+        -Dodestep_DIR="$work/prefix/share/cmake/odestep" >/dev/null
+  cmake --build "$build" >/dev/null
+  echo "ok: cross-compiled firmware, find_package with odestep_DIR under CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY"
+}
+
+checks=("host_consumer find_package" "host_consumer add_subdirectory" "host_consumer FetchContent" readme_snippet)
+if command -v arm-none-eabi-g++ >/dev/null; then
+  checks+=("firmware_consumer find_package" "firmware_consumer add_subdirectory" "firmware_consumer FetchContent"
+           firmware_strict)
+else
+  echo "skipped: the cross-compiled consumer (no arm-none-eabi-g++)"
+fi
+pids=() logs=()
+for i in "${!checks[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n || true; done
+  logs[i]="$work/check-$i.log"
+  (set -e; ${checks[i]}) > "${logs[i]}" 2>&1 &
+  pids[i]=$!
+done
+failed=0
+for i in "${!checks[@]}"; do
+  if wait "${pids[i]}"; then cat "${logs[i]}"; else echo "FAIL: ${checks[i]}:"; cat "${logs[i]}"; failed=1; fi
+done
+exit $failed
