@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSL-1.0
-# The unit suite runs in parts (tests/CMakeLists.txt: one ctest test per test folder, and unit_top for the rest).
+# The unit suite runs in parts (tests/CMakeLists.txt: one ctest test per test file).
 # Checks that the parts' filters FILTERS (a list, one filter argument per part) select every test case of
 # TESTS exactly once: doctest's --count under each filter, summed, equals its count without a filter, and no
 # part is empty (a filter that matched nothing would mean a misspelt pattern).
