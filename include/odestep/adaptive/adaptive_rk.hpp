@@ -225,8 +225,10 @@ public:
     /// Rejected attempts since construction.
     step_count rejected_steps() const noexcept { return rejected_; }
 
-    /// One attempted step from (t, y) toward t_end, never past it; the step lands exactly on t_end when
-    /// the step size would reach within 1% of it (no sliver is left). Accepted (`accepted` true): y and t
+    /// One attempted step from (t, y) toward t_end, never past it and never longer than
+    /// step_control::max_step; the step lands exactly on t_end when the step size would reach within 1% of
+    /// it (no sliver is left), or, where that step would be longer than max_step, covers half of the rest
+    /// (the next one lands). Accepted (`accepted` true): y and t
     /// advance (t = t_end exactly when it landed), and sink(t, y, h, k, y_new) saw the step first (its start,
     /// size, stages and end). Rejected: y and t unchanged, the step size shrunk. Failures leave y and t as
     /// they were: non_finite (f gave NaN or Inf, or the step overflowed), step_too_small (|h| fell to ten
@@ -251,8 +253,12 @@ public:
             if (!(mag > T(0))) return status::non_finite;  // f at the estimate's probe was not finite
         }
         if (control_.max_step > T(0) && mag > control_.max_step) mag = control_.max_step;
-        const bool last = mag + mag / T(100) >= rem;
-        const T h = last ? span : dir * mag;
+        // Within 1% of t_end the step lands on it (no sliver is left), unless that would stretch it past
+        // max_step: then the rest, at most 1.01 max_step, is split into two equal steps.
+        const bool near_end = mag + mag / T(100) >= rem;
+        const bool split = near_end && control_.max_step > T(0) && rem > control_.max_step;
+        const bool last = near_end && !split;
+        const T h = last ? span : split ? dir * (rem / T(2)) : dir * mag;
         // The controller's step below ten ULPs of t: the run cannot resolve it. A step to t_end is the
         // caller's own interval, however short (an event's location re-steps to within ULPs of it).
         if (!last && !(detail::abs_value(h) > T(10) * std::numeric_limits<T>::epsilon() * detail::abs_value(t)))
@@ -269,8 +275,9 @@ public:
         const T habs = detail::abs_value(h);
         if (e <= T(1)) {
             T next = habs * step_factor(control_, g, estimate_order, e, err_prev_, after_rejection_);
-            // A step shortened to land on t_end says nothing against the size planned: keep the larger.
-            if (last && mag > next) next = mag;
+            // A step shortened to land on t_end (or to split the rest) says nothing against the size planned:
+            // keep the larger.
+            if ((last || split) && mag > next) next = mag;
             // A factor that underflows the step to zero (a tiny min_factor or safety) keeps this step's size:
             // a zero would send the next attempt back to the first-step estimate, one evaluation over the
             // published bound.
