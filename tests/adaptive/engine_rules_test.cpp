@@ -144,3 +144,73 @@ TEST_CASE("max_step: Lorenz with max_step 0.01 never takes a step longer than 0.
     CHECK(r.status == status::ok);
     CHECK(largest <= 0.01 + 4 * std::numeric_limits<double>::epsilon() * 10.0);
 }
+
+namespace {
+
+// y' = -y until t = 1.5, NaN past it (a table lookup out of range, a model that traps): counts its calls
+// after the first one that returned NaN. GSL's drivers return at the first failing call.
+struct fails_past {
+    std::size_t* calls_after_nan;
+    bool* failed;
+    void operator()(double t, const state1& y, state1& d) const noexcept {
+        if (*failed) ++*calls_after_nan;
+        if (t > 1.5) {
+            d[0] = std::numeric_limits<double>::quiet_NaN();
+            *failed = true;
+        } else {
+            d[0] = -y[0];
+        }
+    }
+};
+
+template <class Method>
+void no_call_after_nan() {
+    const auto tol = odestep::tolerances<state1>::uniform(1e-8, 1e-8);
+    {  // integrate_adaptive
+        std::size_t after = 0;
+        bool failed = false;
+        fails_past f{&after, &failed};
+        odestep::adaptive_rk<Method, state1> e(tol);
+        state1 y{1.0};
+        const auto r = odestep::integrate_adaptive(e, f, y, 0.0, 3.0);
+        CHECK(r.status == status::non_finite);
+        CHECK(failed);
+        CHECK(after == 0);
+        CHECK(r.t <= 1.5);
+        CHECK(std::fabs(y[0] - std::exp(-r.t)) < 1e-6);  // the last accepted state, at r.t
+    }
+    {  // integrate_times (DOP853 completes its interpolant with three more stages)
+        std::size_t after = 0;
+        bool failed = false;
+        fails_past f{&after, &failed};
+        odestep::adaptive_rk<Method, state1> e(tol);
+        state1 y{1.0};
+        const std::array<double, 4> times{0.5, 1.0, 1.45, 3.0};
+        const auto r = odestep::integrate_times(e, f, y, 0.0, times, [](double, const state1&) {});
+        CHECK(r.status == status::non_finite);
+        CHECK(after == 0);
+    }
+    {  // adaptive_substeps under integrate
+        std::size_t after = 0;
+        bool failed = false;
+        fails_past f{&after, &failed};
+        odestep::adaptive_substeps<Method, state1> s(tol);
+        state1 y{1.0};
+        const auto r = odestep::integrate(s, f, y, 0.0, 3.0, 0.25);
+        CHECK(r.status == status::non_finite);
+        CHECK(r.t == 1.5);
+        CHECK(after == 0);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("non-finite f: no call of f after the first NaN, in every pair and loop") {
+    // Issue 25: DP 5(4) called f 5 more times, with NaN states, after its first NaN (the rest of the step).
+    no_call_after_nan<odestep::tables::bogacki_shampine32>();
+    no_call_after_nan<odestep::tables::fehlberg45>();
+    no_call_after_nan<odestep::tables::cash_karp54>();
+    no_call_after_nan<odestep::tables::dormand_prince54>();
+    no_call_after_nan<odestep::tables::fehlberg78>();
+    no_call_after_nan<odestep::tables::dop853>();
+}

@@ -59,15 +59,17 @@ struct embedded_pair {
     static constexpr int estimate_order =
         E >= 2 ? tab.order : (tab.order < tab.embedded_order[0] ? tab.order : tab.embedded_order[0]) + 1;
 
-    /// k[0] = f(t, y) is given. Fills k[1 .. S-1], y_new = y + h sum b_i k_i and
-    /// err = h sum (b_i - bhat_i) k_i (err2 from the second estimate, if any). t_end is t + h as the caller
-    /// has it (the interval's end, exactly): the stage with c = 1 is evaluated there. Every sum is expanded at
-    /// compile time over the table's non-zero coefficients (a loop over the table at run time cost DOP853 2.3x
-    /// the instructions per step); the terms are added in stage order from 0, as the plain loops would.
+    /// k[0] = f(t, y) is given (finite). Fills k[1 .. S-1], y_new = y + h sum b_i k_i and
+    /// err = h sum (b_i - bhat_i) k_i (err2 from the second estimate, if any), and returns true; returns false
+    /// at the first stage where f gave NaN or Inf, with no further call of f (a user's f may trap on NaN or
+    /// index a table by y), leaving the outputs unspecified. t_end is t + h as the caller has it (the
+    /// interval's end, exactly): the stage with c = 1 is evaluated there. Every sum is expanded at compile
+    /// time over the table's non-zero coefficients (a loop over the table at run time cost DOP853 2.3x the
+    /// instructions per step); the terms are added in stage order from 0, as the plain loops would.
     template <class System>
-    static void step(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k, State& y_new, State& err,
-                     State& err2) {
-        stages(f, y, t, h, t_end, k, y_new, std::make_index_sequence<S>{});
+    [[nodiscard]] static bool step(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k,
+                                   State& y_new, State& err, State& err2) {
+        if (!stages(f, y, t, h, t_end, k, y_new, std::make_index_sequence<S>{})) return false;
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
             if constexpr (!fsal) y_new[n] = y[n] + h * weighted<b_weights>(k, n, std::make_index_sequence<S>{});
@@ -78,6 +80,7 @@ struct embedded_pair {
                 err2[n] = T(0);
             }
         }
+        return true;
     }
 
     // Weight rows as types, so that each weight is a constant expression in `weighted`.
@@ -99,17 +102,20 @@ struct embedded_pair {
         if constexpr (W::value(J) != T(0)) acc += W::value(J) * k[J][n];
     }
 
+    // The stages in order, stopping at the first that is not finite (&& short-circuits).
     template <class System, std::size_t... I>
-    ODESTEP_INLINE static void stages(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k,
+    ODESTEP_INLINE static bool stages(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k,
                                       State& y_new, std::index_sequence<I...>) {
-        (stage<I>(f, y, t, h, t_end, k, y_new), ...);
+        return (stage<I>(f, y, t, h, t_end, k, y_new) && ...);
     }
-    // k_I = f(t + c_I h, y + h sum_{j<I} a_Ij k_j), for I >= 1 (k_0 is given). The FSAL stage's input is
-    // y_{n+1} itself, kept as the new state.
+    // k_I = f(t + c_I h, y + h sum_{j<I} a_Ij k_j), for I >= 1 (k_0 is given); false when it is not finite.
+    // The FSAL stage's input is y_{n+1} itself, kept as the new state.
     template <std::size_t I, class System>
-    ODESTEP_INLINE static void stage(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k,
+    ODESTEP_INLINE static bool stage(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k,
                                      State& y_new) {
-        if constexpr (I >= 1) {
+        if constexpr (I == 0) {
+            return true;
+        } else {
             State input;
             State& in = fsal && I + 1 == S ? y_new : input;
             ODESTEP_STEP_UNROLL
@@ -117,6 +123,7 @@ struct embedded_pair {
                 in[n] = y[n] + h * weighted<a_row<I>>(k, n, std::make_index_sequence<I>{});
             const T ti = tab.c[I] == T(1) ? t_end : t + tab.c[I] * h;
             detail::evaluate(f, ti, static_cast<const State&>(in), k[I]);
+            return detail::all_finite(k[I]);
         }
     }
 
@@ -268,8 +275,10 @@ public:
         State y_new{};  // written by pair::step (for FSAL in its stage loop, which GCC cannot always see)
         State err;
         State err2;
-        pair::step(f, y, t, h, last ? t_end : t + h, k, y_new, err, err2);
-        if (!all_stages_finite(k) || !detail::all_finite(y_new, err, err2)) return status::non_finite;
+        // Every stage was checked as it came (k[0], kept, was checked when it was computed).
+        if (!pair::step(f, y, t, h, last ? t_end : t + h, k, y_new, err, err2) ||
+            !detail::all_finite(y_new, err, err2))
+            return status::non_finite;
         const T e = pair::norm(err, err2, y, y_new, tol_);
         const pi_gains<T> g = gains_for(control_, estimate_order);
         const T habs = detail::abs_value(h);
@@ -340,11 +349,6 @@ private:
         detail::assign(y0_, y);
         detail::assign(k0_, k);
         k0_valid_ = true;
-    }
-    static bool all_stages_finite(const std::array<State, pair::S>& k) noexcept {
-        for (const State& ki : k)
-            if (!detail::all_finite(ki)) return false;
-        return true;
     }
 
     tolerances<State> tol_;
