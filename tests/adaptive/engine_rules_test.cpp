@@ -4,6 +4,7 @@
 // is what integrate() makes of it.
 #include <doctest/doctest.h>
 #include <odestep/adaptive.hpp>
+#include <odestep/explicit_rk.hpp>
 #include <odestep/integrate.hpp>
 
 #include <array>
@@ -213,4 +214,74 @@ TEST_CASE("non-finite f: no call of f after the first NaN, in every pair and loo
     no_call_after_nan<odestep::tables::dormand_prince54>();
     no_call_after_nan<odestep::tables::fehlberg78>();
     no_call_after_nan<odestep::tables::dop853>();
+}
+
+namespace {
+
+// What a run with no step makes of its initial state: status, observations, evaluations.
+struct empty_outcome {
+    status s;
+    std::size_t observed;
+    std::size_t calls;
+    bool y_is_nan;
+};
+
+struct decay1 {
+    void operator()(double, const state1& y, state1& d) const noexcept { d[0] = -y[0]; }
+};
+
+}  // namespace
+
+TEST_CASE("an empty run (t0 == t1) with a NaN y0: the adaptive loops do what integrate() does") {
+    // The reference is integrate() itself (include/odestep/integrate.hpp: run_grid over a plan of zero steps):
+    // ok, y0 observed once at t0, nothing evaluated, y0 untouched. A run checks only what it computes.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const auto run = [&](auto&& call) {
+        std::size_t calls = 0;
+        std::size_t observed = 0;
+        odestep_test::counting<decay1> f{decay1{}, &calls};
+        state1 y{nan};
+        const auto observe = [&](double t, const state1&) {
+            CHECK(t == 2.0);
+            ++observed;
+        };
+        const status s = call(f, y, observe);
+        return empty_outcome{s, observed, calls, std::isnan(y[0])};
+    };
+    const empty_outcome grid = run([](auto& f, state1& y, const auto& observe) {
+        return odestep::integrate(odestep::rk4<state1>{}, f, y, 2.0, 2.0, 0.1, observe).status;
+    });
+    CHECK(grid.s == status::ok);
+    CHECK(grid.observed == 1);
+    CHECK(grid.calls == 0);
+    CHECK(grid.y_is_nan);
+    const empty_outcome substeps = run([](auto& f, state1& y, const auto& observe) {
+        odestep::dormand_prince54_substeps<state1> s;
+        return odestep::integrate(s, f, y, 2.0, 2.0, 0.1, observe).status;
+    });
+    const empty_outcome adaptive = run([](auto& f, state1& y, const auto& observe) {
+        odestep::adaptive_rk<odestep::tables::dormand_prince54, state1> e;
+        return odestep::integrate_adaptive(e, f, y, 2.0, 2.0, observe).status;
+    });
+    const empty_outcome times = run([](auto& f, state1& y, const auto& observe) {
+        odestep::adaptive_rk<odestep::tables::dormand_prince54, state1> e;
+        const std::array<double, 1> at{2.0};
+        return odestep::integrate_times(e, f, y, 2.0, at, observe).status;
+    });
+    for (const empty_outcome& o : {substeps, adaptive, times}) {
+        CHECK(o.s == grid.s);
+        CHECK(o.observed == grid.observed);
+        CHECK(o.calls == grid.calls);
+        CHECK(o.y_is_nan == grid.y_is_nan);
+    }
+    // A step is not a run: adaptive_substeps::step over an interval that rounding empties (t + dt == t, dt not
+    // zero) reports non_finite for a NaN y, as a step that evaluates f at y does (rk4's step with that dt;
+    // tests/adaptive/limits_test.cpp has the finite case).
+    std::size_t calls = 0;
+    odestep_test::counting<decay1> f{decay1{}, &calls};
+    state1 y{nan};
+    odestep::dormand_prince54_substeps<state1> s;
+    CHECK(s.step(f, y, 1e20, 1.0) == status::non_finite);
+    state1 y_rk4{nan};
+    CHECK(odestep::rk4<state1>{}.step(f, y_rk4, 1e20, 1.0) == status::non_finite);
 }
