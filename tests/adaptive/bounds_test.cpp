@@ -21,9 +21,9 @@ namespace {
 using odestep::status;
 using namespace detest;
 
-constexpr double t_end = 20.0;             // DETEST's interval
-constexpr std::size_t samples = 400;       // output times for the interpolant, t_end i / samples
-constexpr int tightest = 10;               // tolerances 1e-3 .. 1e-10
+constexpr double t_end = 20.0;        // DETEST's interval
+constexpr std::size_t samples = 400;  // output times for the interpolant, t_end i / samples
+constexpr int tightest = 10;          // tolerances 1e-3 .. 1e-10
 
 // The largest |y_i - exact_i| / (1 + |exact_i|) (the tolerance's scale) of one run at tol, at the accepted
 // steps (dense false) or at the sample times from the interpolant (dense true).
@@ -83,9 +83,9 @@ void check_pair(const char* name, double steps_bound, double dense_bound, double
         sweep<Method, e1>(w, dense);
         worst_ratio d;
         sweep<Method, d1>(d, dense);
-        MESSAGE((std::string(name) + (dense ? " interpolant" : " steps") + ": A-C, E worst " +
-                std::to_string(w.ratio) + " (" + w.problem + " at 1e-" + std::to_string(w.exponent) + "); D1 worst " +
-                std::to_string(d.ratio) + " (at 1e-" + std::to_string(d.exponent) + ")"));
+        MESSAGE((std::string(name) + (dense ? " interpolant" : " steps") + ": A-C, E worst " + std::to_string(w.ratio) +
+                 " (" + w.problem + " at 1e-" + std::to_string(w.exponent) + "); D1 worst " + std::to_string(d.ratio) +
+                 " (at 1e-" + std::to_string(d.exponent) + ")"));
         CHECK(w.ratio <= (dense ? dense_bound : steps_bound));
         CHECK(d.ratio <= (dense ? d1_dense_bound : d1_steps_bound));
     }
@@ -98,10 +98,10 @@ TEST_CASE("error bounds: every pair at its steps and its interpolant between the
     // Bounds: 1.5 times the largest ratio measured (docs/adaptive.md), in the order steps, interpolant, D1
     // steps, D1 interpolant. Hermite after a pair of order 5 or 8 is not tolerance-proportional: its O(h^4)
     // error falls more slowly than the pair's as the tolerance tightens, so its bound is its ratio at 1e-10.
-    check_pair<odestep::tables::bogacki_shampine32>("BS3(2)", 27, 27, 370, 370);      // 17.9, 17.9, 245, 245
-    check_pair<odestep::tables::fehlberg45>("RKF4(5)", 38, 2100, 750, 950);           // 25.4, 1360, 502, 629
-    check_pair<odestep::tables::cash_karp54>("CK5(4)", 12, 7200, 660, 670);           // 7.6, 4794, 435, 442
-    check_pair<odestep::tables::dormand_prince54>("DP5(4)", 6, 19, 1300, 1500);      // 3.7, 12.3, 861, 984
-    check_pair<odestep::tables::fehlberg78>("RKF7(8)", 2.5, 4.4e5, 33, 51000);        // 1.5, 2.9e5, 21.5, 33736
-    check_pair<odestep::tables::dop853>("DOP853", 7.5, 28, 15, 16);                   // 4.9, 18.2, 10.0, 10.4
+    check_pair<odestep::tables::bogacki_shampine32>("BS3(2)", 27, 27, 370, 370);  // 17.9, 17.9, 245, 245
+    check_pair<odestep::tables::fehlberg45>("RKF4(5)", 38, 2100, 750, 950);       // 25.4, 1360, 502, 629
+    check_pair<odestep::tables::cash_karp54>("CK5(4)", 12, 7200, 660, 670);       // 7.6, 4794, 435, 442
+    check_pair<odestep::tables::dormand_prince54>("DP5(4)", 6, 19, 1300, 1500);   // 3.7, 12.3, 861, 984
+    check_pair<odestep::tables::fehlberg78>("RKF7(8)", 2.5, 4.4e5, 33, 51000);    // 1.5, 2.9e5, 21.5, 33736
+    check_pair<odestep::tables::dop853>("DOP853", 7.5, 28, 15, 16);               // 4.9, 18.2, 10.0, 10.4
 }

@@ -67,8 +67,8 @@ struct embedded_pair {
     /// time over the table's non-zero coefficients (a loop over the table at run time cost DOP853 2.3x the
     /// instructions per step); the terms are added in stage order from 0, as the plain loops would.
     template <class System>
-    [[nodiscard]] static bool step(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k,
-                                   State& y_new, State& err, State& err2) {
+    [[nodiscard]] static bool step(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k, State& y_new,
+                                   State& err, State& err2) {
         if (!stages(f, y, t, h, t_end, k, y_new, std::make_index_sequence<S>{})) return false;
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
@@ -276,8 +276,7 @@ public:
         State err;
         State err2;
         // Every stage was checked as it came (k[0], kept, was checked when it was computed).
-        if (!pair::step(f, y, t, h, last ? t_end : t + h, k, y_new, err, err2) ||
-            !detail::all_finite(y_new, err, err2))
+        if (!pair::step(f, y, t, h, last ? t_end : t + h, k, y_new, err, err2) || !detail::all_finite(y_new, err, err2))
             return status::non_finite;
         const T e = pair::norm(err, err2, y, y_new, tol_);
         const pi_gains<T> g = gains_for(control_, estimate_order);
