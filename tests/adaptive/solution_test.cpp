@@ -211,7 +211,8 @@ TEST_CASE("solution: evaluations within the published bound (DOP853: three more 
     // Without FSAL: f at t0, the first-step probe, 11 new stages per attempt, f at each accepted step's end
     // (the next first stage, or the last step's, for its interpolant) and 3 extra stages per accepted step.
     CHECK(calls == 2 + 11 * attempts + 4 * static_cast<std::size_t>(r.steps));
-    CHECK(calls <= engine_t::rhs_evals_to_start + attempts * (engine_t::rhs_evals_per_attempt + dense_t::rhs_evals_to_complete));
+    CHECK(calls <=
+          engine_t::rhs_evals_to_start + attempts * (engine_t::rhs_evals_per_attempt + dense_t::rhs_evals_to_complete));
 }
 
 TEST_CASE("adaptive_sampler: times one at a time, the same states as integrate_times, bit for bit") {

@@ -36,12 +36,12 @@ class solution {
     static_assert(Capacity >= 1, "odestep: a solution needs room for at least one step");
 
 public:
-    using state_type = State;                                ///< the state, std::array<T, N>
-    using value_type = value_type_t<State>;                  ///< its scalar T
-    using method_type = Method;                              ///< the pair's table tag
-    using piece_type = detail::dense_piece<Method, State>;   ///< one step's interpolant
-    using solution_tag = void;                               ///< marks a solution for the loops' overloads
-    static constexpr std::size_t capacity = Capacity;        ///< the most steps it holds
+    using state_type = State;                                       ///< the state, std::array<T, N>
+    using value_type = value_type_t<State>;                         ///< its scalar T
+    using method_type = Method;                                     ///< the pair's table tag
+    using piece_type = detail::dense_piece<Method, State>;          ///< one step's interpolant
+    using solution_tag = void;                                      ///< marks a solution for the loops' overloads
+    static constexpr std::size_t capacity = Capacity;               ///< the most steps it holds
     static constexpr int order = dense_step<Method, State>::order;  ///< the interpolant's order
 
 private:
