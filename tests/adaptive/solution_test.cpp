@@ -215,8 +215,10 @@ TEST_CASE("solution: evaluations within the published bound (DOP853: three more 
           engine_t::rhs_evals_to_start + attempts * (engine_t::rhs_evals_per_attempt + dense_t::rhs_evals_to_complete));
 }
 
-TEST_CASE("adaptive_sampler: times one at a time, the same states as integrate_times, bit for bit") {
-    using M = odestep::tables::cash_karp54;
+namespace {
+
+template <class M>
+void sampler_as_integrate_times() {
     const auto tols = odestep::tolerances<state2>::uniform(1e-7, 1e-7);
     const std::array<double, 7> times{0.0, 0.25, 0.25, 1.0, 3.3, 7.0, 10.0};
     std::vector<state2> expected;
@@ -243,6 +245,15 @@ TEST_CASE("adaptive_sampler: times one at a time, the same states as integrate_t
     CHECK(back.advance_to(oscillator{}, 1.0, u) == status::invalid_time);  // going back
     CHECK(back.advance_to(oscillator{}, std::numeric_limits<double>::quiet_NaN(), u) == status::invalid_time);
     CHECK(same_bits(u, at2));
+}
+
+}  // namespace
+
+TEST_CASE("adaptive_sampler: times one at a time, the same states as integrate_times, bit for bit") {
+    sampler_as_integrate_times<odestep::tables::cash_karp54>();
+    sampler_as_integrate_times<odestep::tables::dormand_prince54>();
+    sampler_as_integrate_times<odestep::tables::dop853>();
+    sampler_as_integrate_times<odestep::tables::fehlberg45>();
 }
 
 TEST_CASE("adaptive_sampler: the attempt cap per call, NaN from f, bad settings") {

@@ -30,7 +30,7 @@ namespace odestep {
 /// `sol(t, out)` writes the state at t: ok for t in the span [t_first(), t_last()] (either direction); the
 /// state at the span's start and end is the run's own, bit for bit, and between them the interpolant's, as
 /// integrate_times computes it (the same values). A time outside the span, or NaN: status::invalid_time and
-/// out untouched.
+/// out untouched (non_finite where the interpolant overflows, as integrate_times reports it).
 template <class Method, class State, std::size_t Capacity>
 class solution {
     static_assert(Capacity >= 1, "odestep: a solution needs room for at least one step");
@@ -59,8 +59,9 @@ public:
     /// Step i's interpolant (i < size()): its start, size and coefficients.
     const piece_type& piece(std::size_t i) const noexcept { return pieces_[i]; }
 
-    /// The state at t into out: ok inside the span, status::invalid_time (out untouched) outside it, for a
-    /// NaN or infinite t, and before any run.
+    /// The state at t into out: ok inside the span; status::invalid_time (out untouched) outside it, for a
+    /// NaN or infinite t, and before any run; status::non_finite (out untouched) where the interpolant
+    /// overflows between the ends of finite steps (huge states).
     status operator()(T t, State& out) const noexcept {
         if (!started_ || !detail::is_finite(t)) return status::invalid_time;
         const bool forward = !(t_last_ < t_first_);
@@ -78,7 +79,11 @@ public:
             (before(t, pieces_[mid].t0) ? hi : lo) = mid;
         }
         const piece_type& p = pieces_[lo];
-        p.at_theta((t - p.t0) / p.h, out);
+        State u;
+        p.at_theta((t - p.t0) / p.h, u);
+        // The interpolant of finite steps can still overflow between their ends (huge states).
+        if (!detail::all_finite(u)) return status::non_finite;
+        detail::assign(out, u);
         return status::ok;
     }
 
