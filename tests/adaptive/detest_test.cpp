@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // Tolerance proportionality on the DETEST classes A to E (Hull, Enright, Fellen & Sedgwick 1972, "Comparing
 // numerical methods for ordinary differential equations", SIAM J. Numer. Anal. 9(4), 603-635): one or more
-// problems per class, each with a closed-form solution written here in long double, independently of the
+// problems per class, each with a closed-form solution in long double (detest_problems.hpp), independently of the
 // library. The free-running loop (integrate_adaptive) runs DP 5(4), DOP853 and Cash-Karp 5(4) at
 // rtol = atol = 1e-3 .. 1e-10 (float: 1e-3 .. 1e-5), every evaluation of f counted. Checked: the achieved
 // error within a stated factor of the tolerance, the fitted log-log slope of error against tolerance near 1,
