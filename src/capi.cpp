@@ -8,7 +8,7 @@ extern "C" {
 const char* odestep_status_name(odestep_status s) {
     // Every C value is a C++ status of the same value (tests/c/status_agreement_test.cpp); past the last
     // one, to_string's own fallback is not reached through the cast, so the range is checked here.
-    if (static_cast<int>(s) < 0 || static_cast<int>(s) > static_cast<int>(odestep::status::invalid_setting))
+    if (static_cast<int>(s) < 0 || static_cast<int>(s) > static_cast<int>(odestep::status::storage_full))
         return "unknown";
     return odestep::to_string(static_cast<odestep::status>(static_cast<int>(s)));
 }

@@ -76,6 +76,8 @@ typedef enum odestep_status {
     ODESTEP_INVALID_SETTING = 15,   ///< an argument other than a time, a step or a tolerance is wrong: a null
                                     ///< pointer, n of 0 or above ODESTEP_C_MAX_STATES, a stepper not
                                     ///< initialised or of the other kind of system; nothing was touched
+    ODESTEP_STORAGE_FULL = 16,      ///< caller-provided storage is full (C++ adaptive solutions; no C call
+                                    ///< returns it yet)
     /// Not a value: gives the enum the range of a 32-bit int in C++ (the library reads a value the caller
     /// stored, which C allows to be any int; without it, an out-of-range value would be undefined in C++)
     ODESTEP_STATUS_INT_RANGE_ = -2147483647 - 1

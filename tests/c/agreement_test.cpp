@@ -47,7 +47,8 @@ static_assert(same_value<ODESTEP_SINGULAR_MATRIX, odestep::status::singular_matr
 static_assert(same_value<ODESTEP_SUBSTEP_LIMIT, odestep::status::substep_limit>());
 static_assert(same_value<ODESTEP_STEP_TOO_SMALL, odestep::status::step_too_small>());
 static_assert(same_value<ODESTEP_INVALID_SETTING, odestep::status::invalid_setting>());
-// invalid_setting is the last C++ status: a status added after it must be added to the C header too.
+static_assert(same_value<ODESTEP_STORAGE_FULL, odestep::status::storage_full>());
+// storage_full is the last C++ status: a status added after it must be added to the C header too.
 constexpr bool same_text(const char* a, const char* b) {
     while (*a != '\0' && *a == *b) {
         ++a;
@@ -55,12 +56,12 @@ constexpr bool same_text(const char* a, const char* b) {
     }
     return *a == *b;
 }
-static_assert(same_text(odestep::to_string(static_cast<odestep::status>(16)), "unknown"),
-              "a C++ status past invalid_setting has no C counterpart");
+static_assert(same_text(odestep::to_string(static_cast<odestep::status>(17)), "unknown"),
+              "a C++ status past storage_full has no C counterpart");
 
 // Every status name agrees too (the C function wraps to_string).
 void test_names() {
-    for (int i = 0; i <= 16; ++i) {
+    for (int i = 0; i <= 17; ++i) {
         AGREE(std::strcmp(odestep_status_name(static_cast<odestep_status>(i)),
                           odestep::to_string(static_cast<odestep::status>(i))) == 0);
     }
