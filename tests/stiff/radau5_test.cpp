@@ -35,6 +35,11 @@ double worst_relative(const std::array<double, N>& y, const std::array<double, N
     return worst;
 }
 
+static_assert(odestep::check_stepper<odestep::radau5_substeps<S3>>());
+static_assert(odestep::is_stepper_v<odestep::radau5_substeps<S3>>);
+static_assert(odestep::radau5_substeps<S3>::rhs_evals_per_step ==
+              2 + 1000 * (3 + 3 * odestep::radau5<S3>::max_newton_iterations + 2));
+
 // ---- the constants, each against a computation that does not use them
 
 TEST_CASE("radau5 constants: T^-1 T = I and T^-1 A^-1 T is the block form of gamma and alpha +- i beta") {

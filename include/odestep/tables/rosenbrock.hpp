@@ -27,6 +27,8 @@ struct rosenbrock_tableau {
     std::array<std::array<T, S>, S> gamma{};  ///< gamma_ij, lower triangular, constant diagonal
     std::array<T, S> b{};                     ///< weights
     int order = 0;                            ///< classical order (Hairer & Wanner, Table IV.7.1)
+    std::array<T, S> b_embedded{};            ///< weights of the embedded solution (all zero: none)
+    int embedded_order = 0;                   ///< its order (0: no embedded solution)
 };
 
 /// alpha strictly lower triangular, gamma lower triangular with one non-zero diagonal entry, sum b = 1.
@@ -52,6 +54,8 @@ namespace tables {
 /// chemistry problems II: Rosenbrock solvers", Atmos. Environ. 31(20), 3459-3472 (the same coefficients are
 /// PETSc's TSROSWRODAS3, and, transformed to Hairer & Wanner's (a, C, m) form, KPP's Rodas3: a_31 = a_41 = 2,
 /// a_43 = 1, C = (4; 1, -1; 1, -1, -8/3), m = (2, 0, 1, 1), which tests/rk/rosenbrock_test.cpp checks).
+/// The embedded solution of order 2 is the input of the fourth stage, bhat = (3/4, -1/4, 1/2, 0) (the last
+/// row of alpha: the method's own, as KPP's Rodas3 error weights E = m - mhat = (0, 0, 0, 1) give it).
 ///
 /// Why this one (and not ROS3P): a fixed-step user cannot shrink the step when a fast mode appears, so the
 /// method must damp it: L-stability (R(infinity) = 0) and stiff accuracy (y_{n+1} is the last stage, which
@@ -75,7 +79,9 @@ struct rodas3 {
                                                       {T(-1) / T(4), T(-1) / T(4), T(1) / T(2), T(0)},
                                                       {T(1) / T(12), T(1) / T(12), T(-2) / T(3), T(1) / T(2)}}},
                                                     {T(5) / T(6), T(-1) / T(6), T(-1) / T(6), T(1) / T(2)},
-                                                    3};
+                                                    3,
+                                                    {T(3) / T(4), T(-1) / T(4), T(1) / T(2), T(0)},
+                                                    2};
 };
 
 static_assert(is_consistent(rodas3::table<float>) && is_consistent(rodas3::table<double>) &&
