@@ -24,6 +24,8 @@
 #include "stepper.hpp"
 #include "stiff/integrate.hpp"
 #include "stiff/radau5.hpp"
+#include "stiff/rosenbrock_adaptive.hpp"
+#include "stiff/substeps.hpp"
 #include "system.hpp"
 #include "tables/adams.hpp"
 #include "tables/butcher.hpp"

@@ -14,24 +14,16 @@
 #include "../state.hpp"
 #include "../status.hpp"
 #include "radau5.hpp"
+#include "rosenbrock_adaptive.hpp"
 
 namespace odestep {
 
-/// Integrates y' = f(t, y) from t0 to exactly t1 with the error-controlled Radau IIA 5 steps of `engine`
-/// (odestep::radau5: its tolerances, controller, and what it carries), and calls observe(t, y) with the
-/// initial state and after every accepted step. The result's `steps` counts the accepted steps.
-///
-/// Work is bounded: at most `max_attempts` attempts, hence at most 1 + radau5::rhs_evals_to_start +
-/// max_attempts * radau5::rhs_evals_per_attempt evaluations of f. Statuses, with y always the last accepted
-/// state at the returned t: invalid_tolerance / invalid_setting (settings, or max_attempts = 0) and
-/// invalid_time (t0 or t1 not finite), nothing evaluated or observed; non_finite, singular_matrix,
-/// step_too_small (see odestep::radau5); substep_limit (max_attempts reached before t1).
-template <class State, class System, class Observer,
-          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>>, int> = 0>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(radau5<State>& engine, System&& f, State& y,
-                                                                       detail::time_t_of<State> t0,
-                                                                       detail::time_t_of<State> t1, Observer&& observe,
-                                                                       step_count max_attempts = default_max_attempts) {
+namespace detail {
+// The free-running loop of integrate_adaptive for a stiff engine (odestep::radau5, odestep::rosenbrock_adaptive).
+template <class Engine, class State, class System, class Observer>
+integrate_result<value_type_t<State>> stiff_adaptive_loop(Engine& engine, System& f, State& y, value_type_t<State> t0,
+                                                          value_type_t<State> t1, Observer& observe,
+                                                          step_count max_attempts) {
     using T = value_type_t<State>;
     status s = engine.settings_status();
     if (s == status::ok && max_attempts == 0) s = status::invalid_setting;
@@ -52,10 +44,52 @@ template <class State, class System, class Observer,
     if (t != t1) return {status::substep_limit, t, accepted};
     return {status::ok, t, accepted};
 }
+}  // namespace detail
+
+/// Integrates y' = f(t, y) from t0 to exactly t1 with the error-controlled Radau IIA 5 steps of `engine`
+/// (odestep::radau5: its tolerances, controller, and what it carries), and calls observe(t, y) with the
+/// initial state and after every accepted step. The result's `steps` counts the accepted steps.
+///
+/// Work is bounded: at most `max_attempts` attempts, hence at most 1 + radau5::rhs_evals_to_start +
+/// max_attempts * radau5::rhs_evals_per_attempt evaluations of f. Statuses, with y always the last accepted
+/// state at the returned t: invalid_tolerance / invalid_setting (settings, or max_attempts = 0) and
+/// invalid_time (t0 or t1 not finite), nothing evaluated or observed; non_finite, singular_matrix,
+/// step_too_small (see odestep::radau5); substep_limit (max_attempts reached before t1).
+template <class State, class System, class Observer,
+          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>>, int> = 0>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(radau5<State>& engine, System&& f, State& y,
+                                                                       detail::time_t_of<State> t0,
+                                                                       detail::time_t_of<State> t1, Observer&& observe,
+                                                                       step_count max_attempts = default_max_attempts) {
+    return detail::stiff_adaptive_loop(engine, f, y, t0, t1, observe, max_attempts);
+}
 
 /// integrate_adaptive with the Radau IIA 5 engine, without an observer.
 template <class State, class System>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(radau5<State>& engine, System&& f, State& y,
+                                                                       detail::time_t_of<State> t0,
+                                                                       detail::time_t_of<State> t1,
+                                                                       step_count max_attempts = default_max_attempts) {
+    detail::no_observer none;
+    return integrate_adaptive(engine, f, y, t0, t1, none, max_attempts);
+}
+
+/// integrate_adaptive with a Rosenbrock pair (odestep::rosenbrock_adaptive): the same contract as with the
+/// Radau IIA 5 engine, at most rhs_evals_to_start + max_attempts * rhs_evals_per_attempt evaluations of f.
+template <class Method, class State, class System, class Observer,
+          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>>, int> = 0>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(rosenbrock_adaptive<Method, State>& engine,
+                                                                       System&& f, State& y,
+                                                                       detail::time_t_of<State> t0,
+                                                                       detail::time_t_of<State> t1, Observer&& observe,
+                                                                       step_count max_attempts = default_max_attempts) {
+    return detail::stiff_adaptive_loop(engine, f, y, t0, t1, observe, max_attempts);
+}
+
+/// integrate_adaptive with a Rosenbrock pair, without an observer.
+template <class Method, class State, class System>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(rosenbrock_adaptive<Method, State>& engine,
+                                                                       System&& f, State& y,
                                                                        detail::time_t_of<State> t0,
                                                                        detail::time_t_of<State> t1,
                                                                        step_count max_attempts = default_max_attempts) {

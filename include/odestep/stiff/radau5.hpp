@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // odestep: error-controlled Radau IIA 5 in the form of Hairer & Wanner's RADAU5 (Solving ODE II, Sec. IV.8;
 // the code radau5.f): the engine (one attempted step at a time), its dense output (the collocation
-// polynomial), and the course's fixed-grid form (one output interval per call, error-controlled inside).
+// polynomial). The course's fixed-grid form over it is odestep::radau5_substeps (stiff/substeps.hpp).
 #ifndef ODESTEP_STIFF_RADAU5_HPP
 #define ODESTEP_STIFF_RADAU5_HPP
 
@@ -19,7 +19,6 @@
 #include "../linalg/lu.hpp"
 #include "../state.hpp"
 #include "../status.hpp"
-#include "../stepper.hpp"
 #include "../system.hpp"
 #include "../tables/implicit_rk.hpp"
 
@@ -605,107 +604,6 @@ private:
     step_count jacobians_ = 0;
     step_count decompositions_ = 0;
     step_count iterations_ = 0;
-};
-
-/// \brief The course's stiff solver: Radau 5(4) as a stepper that looks like a fixed-step one.
-///
-/// `step(f, y, t, dt)` covers one interval of the caller's grid, [t, t + dt], with as many error-controlled
-/// Radau IIA 5 steps (odestep::radau5) as the tolerances ask for, the last landing exactly on t + dt. The
-/// step size, the Jacobian, its factorizations and the collocation polynomial are carried from one interval
-/// to the next (a step shortened to land on the grid does not shrink the step size). It publishes the
-/// stepper trait set, so integrate, integrate_n_steps and the event loops drive it as any stepper.
-///
-/// At most `max_attempts()` attempts (accepted or rejected) per interval, settable up to the compile-time
-/// MaxAttempts; past it `status::substep_limit` with y back at the interval's start. Every other failure
-/// (see odestep::radau5) also leaves y as it was given. ok means every internal step passed the error test.
-/// `rhs_evals_per_step` is the worst case of one interval (MaxAttempts attempts): a constant bound, not the
-/// typical cost.
-///
-///     odestep::radau5_substeps<state> s(odestep::tolerances<state>::uniform(1e-6, 1e-10));
-///     auto r = odestep::integrate(s, odestep::with_jacobian(f, J), y, 0.0, 40.0, 0.1);
-template <class State, std::size_t MaxAttempts = 1000>
-class radau5_substeps : public stepper_defaults<State> {
-    static_assert(MaxAttempts >= 1, "odestep: radau5_substeps needs room for at least one attempt");
-
-public:
-    using state_type = State;                ///< the state, std::array<T, N>
-    using value_type = value_type_t<State>;  ///< its scalar T
-    using engine_type = radau5<State>;       ///< the error-controlled engine inside
-
-private:
-    using T = value_type;
-
-public:
-    /// The order of the internal steps (over an interval the error is the tolerance's, not dt^order).
-    static constexpr int order = engine_type::order;
-    /// Stages of one internal step.
-    static constexpr std::size_t stages = engine_type::stages;
-    /// Solves equations in every step.
-    static constexpr bool implicit = true;
-    /// The most evaluations of f one interval can cost: f at its start and the first-step estimate, and
-    /// MaxAttempts attempts at their worst.
-    static constexpr std::size_t rhs_evals_per_step =
-        1 + engine_type::rhs_evals_to_start + MaxAttempts * engine_type::rhs_evals_per_attempt;
-    /// The compile-time cap on attempts per interval (the bound of rhs_evals_per_step).
-    static constexpr std::size_t max_attempts_bound = MaxAttempts;
-    /// The most Newton iterations one interval can make.
-    static constexpr std::size_t newton_iterations_per_step = MaxAttempts * engine_type::max_newton_iterations;
-
-    /// Tolerances 1e-6 (float: 1e-4), RADAU5's controller, MaxAttempts attempts per interval.
-    radau5_substeps() noexcept = default;
-    /// The given tolerances, controller settings and cap (all checked before any use).
-    explicit radau5_substeps(const tolerances<State>& tol, const step_control<T>& control = radau5_control<T>(),
-                             std::size_t max_attempts = MaxAttempts) noexcept
-        : engine_(tol, control), max_attempts_(max_attempts) {}
-
-    /// invalid_tolerance, invalid_setting (a controller setting, or a cap outside [1, MaxAttempts]), or ok.
-    status settings_status() const noexcept {
-        const status s = engine_.settings_status();
-        if (s != status::ok) return s;
-        return max_attempts_ >= 1 && max_attempts_ <= MaxAttempts ? status::ok : status::invalid_setting;
-    }
-    /// The cap on attempts per interval.
-    std::size_t max_attempts() const noexcept { return max_attempts_; }
-    /// Sets the cap on attempts per interval: status::invalid_setting (nothing changed) outside
-    /// [1, MaxAttempts].
-    status set_max_attempts(std::size_t n) noexcept {
-        if (n < 1 || n > MaxAttempts) return status::invalid_setting;
-        max_attempts_ = n;
-        return status::ok;
-    }
-    /// The engine: tolerances, controller, step size, counts.
-    engine_type& engine() noexcept { return engine_; }
-    /// The engine, read only.
-    const engine_type& engine() const noexcept { return engine_; }
-
-    /// y <- y(t + dt) to the tolerances. On any status but ok y is the state it was given:
-    /// invalid_tolerance / invalid_setting, invalid_time (t or t + dt not finite), invalid_step (dt zero or
-    /// not finite), non_finite, singular_matrix, step_too_small, substep_limit (the attempt cap).
-    template <class System>
-    [[nodiscard]] status step(System&& f, State& y, T t, T dt) {
-        status s = settings_status();
-        if (s != status::ok) return s;
-        if (!detail::is_finite(t)) return status::invalid_time;
-        if (!detail::is_finite(dt) || dt == T(0)) return status::invalid_step;
-        const T t_end = t + dt;
-        if (!detail::is_finite(t_end)) return status::invalid_time;
-        if (t_end == t) return detail::all_finite(y) ? status::ok : status::non_finite;
-        const State start = y;
-        T tc = t;
-        for (std::size_t n = 0; n < max_attempts_; ++n) {
-            bool accepted = false;
-            s = engine_.attempt(f, tc, y, t_end, accepted);
-            if (s != status::ok) break;
-            if (accepted && tc == t_end) return status::ok;
-        }
-        if (s == status::ok) s = status::substep_limit;
-        detail::assign(y, start);
-        return s;
-    }
-
-private:
-    engine_type engine_{};
-    std::size_t max_attempts_ = MaxAttempts;
 };
 
 }  // namespace odestep
