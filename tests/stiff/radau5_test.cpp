@@ -321,6 +321,21 @@ TEST_CASE("radau5_substeps: OREGO from (1, 2, 3) on a 0.1 grid to 360, against t
     CHECK(err <= 1e-4);
 }
 
+TEST_CASE("radau5: an exactly singular E1 is a rejected attempt with h halved, then the run goes on") {
+    // y' = gamma y with J = gamma and a first step of exactly 1: E1 = (gamma / h) I - J is zero, in any T
+    using S1 = std::array<double, 1>;
+    const double g = odestep::tables::radau5_coefficients<double>::gamma;
+    auto f = [g](double, const S1& y) { return S1{g * y[0]}; };
+    auto j = [g](double, const S1&, odestep::jacobian_t<S1>& m) { m[0][0] = g; };
+    odestep::radau5<S1> engine(odestep::tolerances<S1>::uniform(1e-8, 1e-8));
+    engine.set_step_size(1.0);
+    S1 y{1};
+    const auto r = odestep::integrate_adaptive(engine, odestep::with_jacobian(f, j), y, 0.0, 1.0);
+    REQUIRE(r.status == odestep::status::ok);
+    CHECK(engine.rejected_steps() >= 1);
+    CHECK(y[0] == doctest::Approx(std::exp(g)).epsilon(1e-6));
+}
+
 // ---- failures: a clear status, y bit for bit as it was
 
 TEST_CASE("radau5_substeps: NaN from f, NaN in the Jacobian and the attempt cap leave y bit for bit") {
