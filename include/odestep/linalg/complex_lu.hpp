@@ -103,26 +103,30 @@ constexpr status complex_lu_factor(complex_matrix<T, N>& m, pivots<N>& pivot) no
 template <class T, std::size_t N>
 constexpr void complex_lu_solve(const complex_matrix<T, N>& lu, const pivots<N>& pivot, std::array<T, N>& br,
                                 std::array<T, N>& bi) noexcept {
-    for (std::size_t k = 0; k < N; ++k) {
-        const std::size_t p = pivot[k];
-        if (p != k) {
-            const T sr = br[k];
-            br[k] = br[p];
-            br[p] = sr;
-            const T si = bi[k];
-            bi[k] = bi[p];
-            bi[p] = si;
+    if constexpr (N > 1) {  // N = 1: no interchange and no L (as in lu_solve)
+        for (std::size_t k = 0; k < N; ++k) {
+            const std::size_t p = pivot[k];
+            if (p != k) {
+                const T sr = br[k];
+                br[k] = br[p];
+                br[p] = sr;
+                const T si = bi[k];
+                bi[k] = bi[p];
+                bi[p] = si;
+            }
         }
-    }
-    for (std::size_t i = 1; i < N; ++i) {
-        T sr = br[i];
-        T si = bi[i];
-        for (std::size_t j = 0; j < i; ++j) {
-            sr -= lu.re[i][j] * br[j] - lu.im[i][j] * bi[j];
-            si -= lu.re[i][j] * bi[j] + lu.im[i][j] * br[j];
+        for (std::size_t i = 1; i < N; ++i) {
+            T sr = br[i];
+            T si = bi[i];
+            for (std::size_t j = 0; j < i; ++j) {
+                sr -= lu.re[i][j] * br[j] - lu.im[i][j] * bi[j];
+                si -= lu.re[i][j] * bi[j] + lu.im[i][j] * br[j];
+            }
+            br[i] = sr;
+            bi[i] = si;
         }
-        br[i] = sr;
-        bi[i] = si;
+    } else {
+        (void)pivot;
     }
     for (std::size_t i = N; i-- > 0;) {
         T sr = br[i];
