@@ -108,8 +108,9 @@ mat<T, N> phi_of_linear(const mat<T, N>& a, T h) {
     return phi;
 }
 
-TEST_CASE("transition: on y' = A y, Phi is the published stability polynomial R(hA) of Euler, Heun, RK4 and "
-          "Dormand-Prince 5(4)") {
+TEST_CASE(
+    "transition: on y' = A y, Phi is the published stability polynomial R(hA) of Euler, Heun, RK4 and "
+    "Dormand-Prince 5(4)") {
     using state = std::array<double, 3>;
     const double h = 0.1;  // |hA| about 0.3: every power up to the 6th is above round-off
     // R(z) = sum_k gamma_k z^k. Euler: 1 + z; Heun (order 2, 2 stages): 1 + z + z^2/2; RK4 (order 4, 4
@@ -144,8 +145,9 @@ TEST_CASE("transition: on y' = A y, Phi is the published stability polynomial R(
     CHECK(std::fabs(gamma6 - 1.0L / 600) < 1e-15L);
 }
 
-TEST_CASE("transition: on y' = A y, Phi is R(hA) with R's coefficients b^T A^(k-1) 1 from the table, for every "
-          "explicit table") {
+TEST_CASE(
+    "transition: on y' = A y, Phi is R(hA) with R's coefficients b^T A^(k-1) 1 from the table, for every "
+    "explicit table") {
     // The stability polynomial of an explicit table is R(z) = 1 + sum_k (b^T A^(k-1) 1) z^k (Hairer & Wanner,
     // Solving ODE II, Sec. IV.2, eq. (2.5) expanded), computed here in long double from the published table:
     // a route (scalar coefficients, then matrix powers) that shares nothing with the stepper's stage loop.
@@ -172,7 +174,8 @@ TEST_CASE("transition: on y' = A y, Phi is R(hA) with R's coefficients b^T A^(k-
     });
 }
 
-TEST_CASE("transition: in float, RK4's Phi on y' = A y is R(hA) to float round-off, and the state is the plain step's") {
+TEST_CASE(
+    "transition: in float, RK4's Phi on y' = A y is R(hA) to float round-off, and the state is the plain step's") {
     using state = std::array<float, 3>;
     mat<float, 3> a{};
     for (std::size_t i = 0; i < 3; ++i)
@@ -232,7 +235,9 @@ struct kepler4_jacobian {
     template <class T>
     void operator()(T, const std::array<T, 4>& y, mat<T, 4>& J) const {
         const mat<T, 2> h = kepler_hessian(std::array<T, 2>{y[0], y[1]});
-        J = {{{T(0), T(0), T(1), T(0)}, {T(0), T(0), T(0), T(1)}, {h[0][0], h[0][1], T(0), T(0)},
+        J = {{{T(0), T(0), T(1), T(0)},
+              {T(0), T(0), T(0), T(1)},
+              {h[0][0], h[0][1], T(0), T(0)},
               {h[1][0], h[1][1], T(0), T(0)}}};
     }
 };
@@ -277,8 +282,9 @@ void check_against_differences(F f, const std::array<T, N>& y, T t, T dt, T e0) 
     }
 }
 
-TEST_CASE("transition: on Lorenz, the pendulum and Kepler, Phi is the limit of central differences of the plain "
-          "step, their error falling as e^2") {
+TEST_CASE(
+    "transition: on Lorenz, the pendulum and Kepler, Phi is the limit of central differences of the plain "
+    "step, their error falling as e^2") {
     auto lz = odestep::with_jacobian(lorenz{}, lorenz_jacobian{});
     const std::array<double, 3> y0{1.0, 2.0, 20.0};
     check_against_differences<odestep::rk4<std::array<double, 3>>, odestep::rk4_transition<std::array<double, 3>>>(
@@ -436,8 +442,9 @@ void check_splitting(double h) {
     }
 }
 
-TEST_CASE("splitting transition: Verlet, Forest-Ruth and Yoshida on Kepler: Phi^T J Phi = J, and Phi is the limit "
-          "of the plain step's differences") {
+TEST_CASE(
+    "splitting transition: Verlet, Forest-Ruth and Yoshida on Kepler: Phi^T J Phi = J, and Phi is the limit "
+    "of the plain step's differences") {
     check_splitting<odestep::tables::velocity_verlet>(0.2);
     check_splitting<odestep::tables::forest_ruth>(0.2);
     check_splitting<odestep::tables::yoshida6>(0.2);
@@ -498,8 +505,9 @@ TEST_CASE("transition: a NaN in J, a non-finite state or an overflowing Phi is n
         CHECK(same_bits(phi, phi0));
     }
     SUBCASE("a finite state with an overflowing Phi") {
-        auto sys =
-            odestep::with_jacobian(f, [](double, const state&, mat<double, 2>& J) { J = {{{1e300, 1e300}, {1e300, 1e300}}}; });
+        auto sys = odestep::with_jacobian(f, [](double, const state&, mat<double, 2>& J) {
+            J = {{{1e300, 1e300}, {1e300, 1e300}}};
+        });
         state y = y0;
         mat<double, 2> phi = phi0;
         CHECK(st.step(sys, y, phi, 0.0, 0.1) == odestep::status::non_finite);
@@ -507,8 +515,11 @@ TEST_CASE("transition: a NaN in J, a non-finite state or an overflowing Phi is n
         CHECK(same_bits(phi, phi0));
     }
     SUBCASE("a non-finite state") {
-        auto sys = odestep::with_jacobian([](double, const state&) { return state{std::numeric_limits<double>::infinity(), 0.0}; },
-                                          [](double, const state&, mat<double, 2>& J) { J = {}; });
+        auto sys = odestep::with_jacobian(
+            [](double, const state&) {
+                return state{std::numeric_limits<double>::infinity(), 0.0};
+            },
+            [](double, const state&, mat<double, 2>& J) { J = {}; });
         state y = y0;
         mat<double, 2> phi = phi0;
         CHECK(st.step(sys, y, phi, 0.0, 0.1) == odestep::status::non_finite);
@@ -516,14 +527,15 @@ TEST_CASE("transition: a NaN in J, a non-finite state or an overflowing Phi is n
         CHECK(same_bits(phi, phi0));
     }
     SUBCASE("unchecked: the same arithmetic, written as it comes") {
-        auto sys = odestep::with_jacobian(f, [](double, const state&, mat<double, 2>& J) { J = {{{0.0, 1.0}, {-1.0, 0.0}}}; });
+        auto sys = odestep::with_jacobian(f, [](double, const state&, mat<double, 2>& J) {
+            J = {{{0.0, 1.0}, {-1.0, 0.0}}};
+        });
         state y = y0;
         state yc = y0;
         mat<double, 2> phi{};
         mat<double, 2> phic{};
-        CHECK(odestep::explicit_rk_transition<odestep::tables::rk4, state, odestep::unchecked>{}.step(sys, y, phi, 0.0,
-                                                                                                       0.1) ==
-              odestep::status::ok);
+        CHECK(odestep::explicit_rk_transition<odestep::tables::rk4, state, odestep::unchecked>{}.step(
+                  sys, y, phi, 0.0, 0.1) == odestep::status::ok);
         CHECK(st.step(sys, yc, phic, 0.0, 0.1) == odestep::status::ok);
         CHECK(same_bits(y, yc));
         CHECK(same_bits(phi, phic));

@@ -35,7 +35,7 @@ struct dual {
     /// The number of partial derivatives.
     static constexpr std::size_t size = K;
 
-    T value = T(0);          ///< the value a
+    T value = T(0);           ///< the value a
     std::array<T, K> grad{};  ///< the partial derivatives d a / d p_k
 
     /// Zero.

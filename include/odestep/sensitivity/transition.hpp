@@ -197,10 +197,10 @@ struct rk_tangent_listener {
 template <class Method, class State, class Check = checked>
 class explicit_rk_transition {
 public:
-    using state_type = State;                ///< the state, std::array<T, N>
-    using value_type = value_type_t<State>;  ///< T
-    using method_type = Method;              ///< the table tag
-    using check_type = Check;                ///< odestep::checked or odestep::unchecked
+    using state_type = State;                                ///< the state, std::array<T, N>
+    using value_type = value_type_t<State>;                  ///< T
+    using method_type = Method;                              ///< the table tag
+    using check_type = Check;                                ///< odestep::checked or odestep::unchecked
     using stepper_type = explicit_rk<Method, State, Check>;  ///< the plain stepper whose step this is
     using matrix_type = jacobian_t<State>;                   ///< Phi, N x N: phi[i][j] = d y_{n+1,i} / d y_{n,j}
     static constexpr int order = stepper_type::order;        ///< the method's order
@@ -319,13 +319,13 @@ struct kick_listener {
 template <class Method, class State, class Check = checked>
 class splitting_transition {
 public:
-    using state_type = State;                               ///< the state of x and of v, std::array<T, N>
-    using value_type = value_type_t<State>;                 ///< T
-    using method_type = Method;                             ///< the table tag
-    using check_type = Check;                               ///< odestep::checked or odestep::unchecked
-    using stepper_type = splitting<Method, State, Check>;   ///< the plain stepper whose step this is
-    using matrix_type = phase_matrix_t<State>;              ///< Phi, 2N x 2N on (x, v)
-    static constexpr int order = stepper_type::order;       ///< the method's order
+    using state_type = State;                                   ///< the state of x and of v, std::array<T, N>
+    using value_type = value_type_t<State>;                     ///< T
+    using method_type = Method;                                 ///< the table tag
+    using check_type = Check;                                   ///< odestep::checked or odestep::unchecked
+    using stepper_type = splitting<Method, State, Check>;       ///< the plain stepper whose step this is
+    using matrix_type = phase_matrix_t<State>;                  ///< Phi, 2N x 2N on (x, v)
+    static constexpr int order = stepper_type::order;           ///< the method's order
     static constexpr std::size_t kicks = stepper_type::stages;  ///< kicks per step
     /// Evaluations of a per step (each kick's, none kept from the last step).
     static constexpr std::size_t rhs_evals_per_step = kicks;
@@ -347,8 +347,7 @@ public:
 
     /// (x, v) <- (x, v)_{n+1}, s <- Phi s for a sensitivity s = d (x, v)_n / d p of 2N rows and M columns.
     template <class Accel, std::size_t M>
-    [[nodiscard]] status propagate(Accel&& a, State& x, State& v, sensitivity_matrix<T, 2 * N, M>& s, T t,
-                                   T dt) const {
+    [[nodiscard]] status propagate(Accel&& a, State& x, State& v, sensitivity_matrix<T, 2 * N, M>& s, T t, T dt) const {
         return advance<M, false>(a, x, v, s, s, t, dt);
     }
 
