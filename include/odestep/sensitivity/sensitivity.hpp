@@ -5,6 +5,7 @@
 #define ODESTEP_SENSITIVITY_SENSITIVITY_HPP
 
 #include "dual.hpp"
+#include "implicit.hpp"
 #include "transition.hpp"
 
 #endif
