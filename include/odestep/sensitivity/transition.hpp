@@ -50,9 +50,11 @@ template <class T, std::size_t R, std::size_t L, std::size_t C>
 constexpr void multiply(const sensitivity_matrix<T, R, L>& a, const sensitivity_matrix<T, L, C>& b,
                         sensitivity_matrix<T, R, C>& to) noexcept {
     for (std::size_t i = 0; i < R; ++i) {
-        for (std::size_t j = 0; j < C; ++j) to[i][j] = T(0);
-        for (std::size_t l = 0; l < L; ++l) {
+        ODESTEP_UNROLL
+        for (std::size_t j = 0; j < C; ++j) to[i][j] = a[i][0] * b[0][j];
+        for (std::size_t l = 1; l < L; ++l) {
             const T ail = a[i][l];
+            ODESTEP_UNROLL
             for (std::size_t j = 0; j < C; ++j) to[i][j] += ail * b[l][j];
         }
     }
@@ -61,8 +63,10 @@ constexpr void multiply(const sensitivity_matrix<T, R, L>& a, const sensitivity_
 // to += c m.
 template <class T, std::size_t R, std::size_t C>
 constexpr void add_scaled(sensitivity_matrix<T, R, C>& to, T c, const sensitivity_matrix<T, R, C>& m) noexcept {
-    for (std::size_t i = 0; i < R; ++i)
+    for (std::size_t i = 0; i < R; ++i) {
+        ODESTEP_UNROLL
         for (std::size_t j = 0; j < C; ++j) to[i][j] += c * m[i][j];
+    }
 }
 
 // The identity, or the seed s: what a sensitivity starts from.
