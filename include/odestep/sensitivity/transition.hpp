@@ -135,43 +135,42 @@ struct rk_tangent_listener {
         if (calls < plan::evaluated) {
             jacobian_t<State> jac;
             evaluate_jacobian(f, t, y, jac);
-            differentiate(calls, jac, std::make_index_sequence<S>{});
+            differentiate(plan::order[calls], jac);
         }
         ++calls;
     }
 
-    template <std::size_t... I>
-    void differentiate(std::size_t m, const jacobian_t<State>& jac, std::index_sequence<I...>) {
-        ((I == plan::order[m] ? stage<I>(jac) : void()), ...);
+    // Whether stage i reads an earlier stage (a_ij != 0 for some j).
+    static constexpr std::array<bool, S> reading_stages() noexcept {
+        std::array<bool, S> reads{};
+        for (std::size_t i = 0; i < S; ++i)
+            for (std::size_t j = 0; j < i; ++j) reads[i] = reads[i] || plan::tab.a[i][j] != T(0);
+        return reads;
     }
+    static constexpr std::array<bool, S> reads = reading_stages();
 
-    template <std::size_t I>
-    void stage(const jacobian_t<State>& jac) {
-        if constexpr (plan::needed[I]) {
-            constexpr bool reads_none = [] {
-                for (std::size_t j = 0; j < I; ++j)
-                    if (plan::tab.a[I][j] != T(0)) return false;
-                return true;
-            }();
-            if constexpr (reads_none && Identity) {
-                static_assert(M == N, "odestep: an identity seed is square");
-                for (std::size_t r = 0; r < N; ++r)
-                    for (std::size_t c = 0; c < N; ++c) k[I][r][c] = jac[r][c];  // K_i = J_i I
-            } else {
-                block z;  // Z_i = S + dt sum_j a_ij K_j
-                if constexpr (Identity) {
-                    set_identity(z);
-                } else {
-                    z = seed;
-                }
-                add_stage_terms<I>(z, std::make_index_sequence<I>{});
-                multiply(jac, z, k[I]);  // K_i = J_i Z_i
+    // K_i = J_i Z_i, Z_i = S + dt sum_{j<i} a_ij K_j. One loop over the table's row, not one body per stage:
+    // the plain step may be flattened (ODESTEP_STEP_FLATTEN) with this listener inlined at each of its S
+    // evaluations, and S bodies per evaluation would make S^2 of them.
+    void differentiate(std::size_t i, const jacobian_t<State>& jac) {
+        if constexpr (Identity) {
+            static_assert(M == N, "odestep: an identity seed is square");
+            if (!reads[i]) {
+                k[i] = jac;  // K_i = J_i I
+                return;
             }
         }
-    }
-    template <std::size_t I, std::size_t... J>
-    void add_stage_terms(block& z, std::index_sequence<J...>) const {
-        (((plan::tab.a[I][J] != T(0)) ? add_scaled(z, dt * plan::tab.a[I][J], k[J]) : void()), ...);
+        block z;
+        if constexpr (Identity) {
+            set_identity(z);
+        } else {
+            z = seed;
+        }
+        for (std::size_t j = 0; j < i; ++j) {
+            const T a = plan::tab.a[i][j];
+            if (a != T(0)) add_scaled(z, dt * a, k[j]);
+        }
+        multiply(jac, z, k[i]);
     }
 };
 
