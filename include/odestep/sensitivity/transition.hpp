@@ -142,10 +142,10 @@ struct rk_tangent_listener {
 
     // Whether stage i reads an earlier stage (a_ij != 0 for some j).
     static constexpr std::array<bool, S> reading_stages() noexcept {
-        std::array<bool, S> reads{};
+        std::array<bool, S> flags{};
         for (std::size_t i = 0; i < S; ++i)
-            for (std::size_t j = 0; j < i; ++j) reads[i] = reads[i] || plan::tab.a[i][j] != T(0);
-        return reads;
+            for (std::size_t j = 0; j < i; ++j) flags[i] = flags[i] || plan::tab.a[i][j] != T(0);
+        return flags;
     }
     static constexpr std::array<bool, S> reads = reading_stages();
 
