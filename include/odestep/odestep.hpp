@@ -19,6 +19,7 @@
 #include "rk/newton.hpp"
 #include "rk/rosenbrock.hpp"
 #include "roots/bracket.hpp"
+#include "sensitivity/sensitivity.hpp"
 #include "state.hpp"
 #include "status.hpp"
 #include "stepper.hpp"
