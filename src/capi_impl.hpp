@@ -132,7 +132,8 @@ struct method_ops {
                           bool kept);
     /// The exact single steps of size n (sizes[n - 1]), n up to ODESTEP_C_EXACT_STATES.
     std::array<sized_ops<T>, exact_states> sizes;
-    /// The single steps on the padded object: after a loop, so that its history goes on.
+    /// The single steps on the padded object: for n above ODESTEP_C_EXACT_STATES, and after a loop (so that
+    /// its history goes on).
     sized_ops<T> padded;
 };
 
