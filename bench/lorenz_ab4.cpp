@@ -2,7 +2,7 @@
 // Lorenz (3 states, double), the four-step Adams-Bashforth method, fixed step, started by three RK4 steps.
 // Every variant keeps the derivatives of the last three steps between steps (one evaluation of f per step
 // once started): odestep in its stepper (with its checks that a step continues the history: the same dt
-// and the expected time), the hand loops in a ring of three next to the state, Odeint in its stepper, its
+// and the expected time), the hand loops in an array of three next to the state (shifted down as a block each step), Odeint in its stepper, its
 // initializing stepper set to runge_kutta4 (its default is an extrapolation stepper: another start). GSL
 // odeiv2's Adams method (msadams) varies its order and step: no GSL variant. The reference is a DOP853 run
 // in long double.
@@ -76,10 +76,10 @@ int main(int argc, char** argv) {
           "odestep::adams_bashforth4<State, rk4<State, unchecked>, unchecked>: no NaN/Inf test (the same "
           "arithmetic), the history's grid still checked",
           bench_step_lorenz_ab4_odestep_unchecked, true, start_odestep_unchecked},
-         {"hand", "hand-written Adams-Bashforth 4 loop, the last three f in a ring, rk4 start",
+         {"hand", "hand-written Adams-Bashforth 4 loop, the last three f shifted as a block, rk4 start out of line",
           bench_step_lorenz_ab4_hand, true, start_hand},
          {"hand_checked",
-          "the hand loop, checked: NaN/Inf in the new y (or in f at the start) fails the step; y and the ring are "
+          "the hand loop, checked: NaN/Inf in the new y (or in f at the start) fails the step; y and the history are "
           "left as they were (hand.hpp adams_bashforth4_checked)",
           bench_step_lorenz_ab4_hand_checked, true, start_hand_checked},
          {"odeint", "Odeint adams_bashforth<4, std::array> do_step, runge_kutta4 as its initializing stepper",

@@ -3,7 +3,7 @@
 // Moulton corrector applied once), fixed step, started by three RK4 steps.
 // Every variant keeps the derivatives of the last three steps between steps (two evaluations of f per step
 // once started): odestep in its stepper (with its checks that a step continues the history: the same dt
-// and the expected time), the hand loops in a ring of three next to the state, Odeint in its stepper, its
+// and the expected time), the hand loops in an array of three next to the state (shifted down as a block each step), Odeint in its stepper, its
 // initializing stepper runge_kutta4 (its default here; written out as in lorenz_ab4). Odeint's corrector
 // coefficients for 4 steps are 3/8, 19/24, -5/24, 1/24 (Boost 1.74, adams_moulton_coefficients.hpp), the same. GSL
 // odeiv2's Adams method (msadams) varies its order and step: no GSL variant. The reference is a DOP853 run
@@ -69,10 +69,12 @@ int main(int argc, char** argv) {
         argc, argv, p,
         {{"odestep", "odestep::adams_bashforth_moulton4 (PECE, rk4 start), history kept and checked by the stepper",
           bench_step_lorenz_abm4_odestep, true, start_odestep},
-         {"hand", "hand-written Adams-Bashforth-Moulton 4 (PECE) loop, the last three f in a ring, rk4 start",
+         {"hand",
+          "hand-written Adams-Bashforth-Moulton 4 (PECE) loop, the last three f shifted as a block, rk4 start out of "
+          "line",
           bench_step_lorenz_abm4_hand, true, start_hand},
          {"hand_checked",
-          "the hand loop, checked: NaN/Inf in the new y (or in f at the start) fails the step; y and the ring are "
+          "the hand loop, checked: NaN/Inf in the new y (or in f at the start) fails the step; y and the history are "
           "left as they were (hand.hpp adams_bashforth_moulton4_checked)",
           bench_step_lorenz_abm4_hand_checked, true, start_hand_checked},
          {"odeint", "Odeint adams_bashforth_moulton<4, std::array> do_step, runge_kutta4 as its initializing stepper",

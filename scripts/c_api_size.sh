@@ -21,13 +21,14 @@ cat > "$out/main.c" <<'C'
 static void f(float t, const float* y, float* dydt, void* ctx) { (void)t; (void)ctx; dydt[0] = y[1]; dydt[1] = -y[0]; dydt[2] = -y[2]; dydt[3] = y[2] - y[3]; }
 static void a(float t, const float* x, float* acc, void* ctx) { (void)t; (void)ctx; acc[0] = -x[0]; acc[1] = -x[1]; }
 static float g(float t, const float* y, void* ctx) { (void)t; (void)ctx; return y[0]; }
+static odestep_event_result bounce(float t, float* y, void* ctx) { (void)t; (void)ctx; y[1] = -0.8f * y[1]; return ODESTEP_PROCEED; }
 volatile float sink;
 int main(void) {
     float y[4] = {1.0f, 0.0f, 1.0f, 0.0f};
     const odestep_system_f sys = {f, 0, 4};
     const odestep_newton_f nsys = {a, 0, 2};
     odestep_stepper_f s;
-    (void)sys; (void)nsys; (void)s; (void)g; (void)a; (void)f;
+    (void)sys; (void)nsys; (void)s; (void)g; (void)a; (void)f; (void)bounce;
 #if CASE == 1
     odestep_stepper_init_f(&s, &METHOD);
     odestep_step_f(&s, &sys, y, 0.0f, 0.01f);
@@ -44,6 +45,13 @@ int main(void) {
         odestep_event_loop_start_f(&loop, &METHOD, &e, 1, 0, &sys, y, 0.0f, 0.01f);
         odestep_event_loop_tick_f(&loop, &sys, y, 0);
     }
+#elif CASE == 5
+    {
+        odestep_event_loop_f loop;
+        odestep_event_f e = {g, ODESTEP_FALLING, bounce, 0, 0.0f, 0.0f, 0.0f, 0};
+        odestep_event_loop_start_f(&loop, &METHOD, &e, 1, 0, &sys, y, 0.0f, 0.01f);
+        odestep_event_loop_tick_f(&loop, &sys, y, 0);
+    }
 #endif
     sink = y[0];
     return 0;
@@ -54,7 +62,8 @@ cases=("baseline|0|odestep_rk4_f"
        "euler step|1|odestep_euler_f" "heun step|1|odestep_heun_f" "rk4 step|1|odestep_rk4_f"
        "dp54 step|1|odestep_dp54_f" "dop853 step|1|odestep_dop853_f" "abm4 step|1|odestep_abm4_f"
        "velocity_verlet step|2|odestep_velocity_verlet_f" "forest_ruth step|2|odestep_forest_ruth_f"
-       "rk4 integrate|3|odestep_rk4_f" "rk4 event loop (start + tick)|4|odestep_rk4_f")
+       "rk4 integrate|3|odestep_rk4_f" "rk4 event loop (start + tick), terminal event|4|odestep_rk4_f"
+       "rk4 event loop (start + tick), event with an action|5|odestep_rk4_f")
 failures=0
 echo "| core | flags | use (float, n = 4, MAX_STATES ${MAX_STATES:-8}) | flash of the C API (.text + .rodata, bytes) | __aeabi_d* |"
 echo "|---|---|---|---:|---|"

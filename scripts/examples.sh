@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: BSL-1.0
 # Installs what is missing, builds the examples and runs them; each run's numbers are then checked
 # against closed forms by the example's checker (examples/check/*.awk). The examples write CSV files into
-# build/examples/examples/data, which scripts/plots.sh turns into the gallery's pictures (docs/gallery/).
+# build/examples/examples/data, which scripts/plots.sh turns into the gallery's pictures (build/gallery/;
+# `scripts/plots.sh --update-docs` replaces docs/gallery/'s).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh examples
@@ -17,4 +18,4 @@ done
 echo "== checking the printed numbers against closed forms"
 ctest --preset examples
 echo "== the gallery's pictures"
-scripts/plots.sh build/examples/examples/data docs/gallery
+scripts/plots.sh build/examples/examples/data build/gallery

@@ -1,14 +1,20 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSL-1.0
 # Turns the examples' CSV files into the pictures of the gallery (docs/gallery.md): one gnuplot script per
-# picture in scripts/plots/, each PNG written to docs/gallery/ and checked to be a non-empty PNG file.
-#   scripts/plots.sh [CSV directory [PNG directory]]
-# The defaults are where `scripts/examples.sh` leaves the CSV files (build/examples/examples/data) and
-# docs/gallery. Needs gnuplot (scripts/install-deps.sh examples installs it).
+# picture in scripts/plots/, each PNG checked to be a non-empty PNG file.
+#   scripts/plots.sh [--update-docs] [CSV directory [PNG directory]]
+# The CSV files are read from where `scripts/examples.sh` leaves them (build/examples/examples/data). The
+# pictures go to build/gallery, so that a run leaves the work tree as it found it; --update-docs writes them
+# into docs/gallery instead (then commit them). Needs gnuplot (scripts/install-deps.sh examples installs it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+default_out=build/gallery
+if [ "${1:-}" = --update-docs ]; then
+  default_out=docs/gallery
+  shift
+fi
 data=${1:-build/examples/examples/data}
-out=${2:-docs/gallery}
+out=${2:-$default_out}
 command -v gnuplot >/dev/null || { echo "plots: gnuplot is missing (scripts/install-deps.sh examples)"; exit 1; }
 [ -d "$data" ] || { echo "plots: no CSV directory $data (run the examples first: scripts/examples.sh)"; exit 1; }
 mkdir -p "$out"

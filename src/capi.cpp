@@ -27,7 +27,8 @@ static_assert(same_value<ODESTEP_SINGULAR_MATRIX, odestep::status::singular_matr
 static_assert(same_value<ODESTEP_SUBSTEP_LIMIT, odestep::status::substep_limit>());
 static_assert(same_value<ODESTEP_STEP_TOO_SMALL, odestep::status::step_too_small>());
 static_assert(same_value<ODESTEP_INVALID_SETTING, odestep::status::invalid_setting>());
-// invalid_setting is the last C++ status: a status added after it must be added to the C header too.
+static_assert(same_value<ODESTEP_STORAGE_FULL, odestep::status::storage_full>());
+// storage_full is the last C++ status: a status added after it must be added to the C header too.
 constexpr bool same_text(const char* a, const char* b) {
     while (*a != '\0' && *a == *b) {
         ++a;
@@ -35,8 +36,8 @@ constexpr bool same_text(const char* a, const char* b) {
     }
     return *a == *b;
 }
-static_assert(same_text(odestep::to_string(static_cast<odestep::status>(16)), "unknown"),
-              "a C++ status past invalid_setting has no C counterpart");
+static_assert(same_text(odestep::to_string(static_cast<odestep::status>(17)), "unknown"),
+              "a C++ status past storage_full has no C counterpart");
 
 }  // namespace
 
@@ -45,7 +46,7 @@ extern "C" {
 const char* odestep_status_name(odestep_status s) {
     // Every C value is a C++ status of the same value (the static_asserts above); past the last
     // one, to_string's own fallback is not reached through the cast, so the range is checked here.
-    if (static_cast<int>(s) < 0 || static_cast<int>(s) > static_cast<int>(odestep::status::invalid_setting))
+    if (static_cast<int>(s) < 0 || static_cast<int>(s) > static_cast<int>(odestep::status::storage_full))
         return "unknown";
     return odestep::to_string(static_cast<odestep::status>(static_cast<int>(s)));
 }

@@ -2,21 +2,33 @@
 // odestep C API: the adapters from the C structs (include/odestep/odestep.h) to the C++ templates, written
 // once for float and double; capi_float.cpp and capi_double.cpp instantiate them under the C names.
 //
-// The state. A C caller's n is known at run time, a C++ state's size at compile time: each call copies the
-// caller's n values into a std::array<T, ODESTEP_C_MAX_STATES> whose components n .. MAX-1 are zero, and
-// the right-hand side's adapter hands the user's f only the first n components and writes zero to the
-// others of dydt. The padding therefore stays exactly zero through every stage (0 + dt * sum of zeros), so
-// the steppers' finiteness checks, which run over all MAX components, decide on the first n alone. On
-// success the first n components are copied back; on failure nothing is.
+// The state. A C caller's n is known at run time, a C++ state's size at compile time. Two forms:
+//   - exact (the single steps, n <= ODESTEP_C_EXACT_STATES): each method is compiled for every size
+//     1 .. ODESTEP_C_EXACT_STATES, and a step runs the stepper of std::array<T, n> on a copy of the
+//     caller's n values, with the user's f called directly: the C++ step's arithmetic, no padding.
+//   - padded (the loops, the event loop, and the single steps of a larger n): the stepper of
+//     std::array<T, ODESTEP_C_MAX_STATES>; each call copies the caller's n values into a state whose
+//     components n .. MAX-1 are zero, and the right-hand side's adapter hands the user's f only the first
+//     n components and writes zero to the others of dydt. The padding therefore stays exactly zero through
+//     every stage (0 + dt * sum of zeros), so the steppers' finiteness checks, which run over all MAX
+//     components, decide on the first n alone.
+// Either way the first n components are copied back on success only; on failure nothing is.
 //
 // The stepper object (explicit_rk, splitting, adams) is constructed in the caller's storage
 // (odestep_stepper_*.storage) by placement new: no heap, and a method is a constant table of function
-// pointers (method_ops), so that a firmware links the code of the methods it names and no other.
+// pointers (method_ops), so that a firmware links the code of the methods it names and no other. The
+// storage starts with a binding: the form and size the object there was constructed for, and that form's
+// functions. A single step checks its n against the binding (one compare) instead of validating the
+// method and n again; a step with another n (or of the other kind of system) validates them and
+// constructs the object of its size afresh (an empty history).
 #ifndef ODESTEP_SRC_CAPI_IMPL_HPP
 #define ODESTEP_SRC_CAPI_IMPL_HPP
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <new>
 #include <type_traits>
 
@@ -31,6 +43,10 @@
 namespace odestep::capi {
 
 constexpr std::size_t max_states = ODESTEP_C_MAX_STATES;
+/// The sizes whose single steps are compiled exactly (odestep.h, ODESTEP_C_EXACT_STATES; at most max_states).
+constexpr std::size_t exact_states = static_cast<std::size_t>(ODESTEP_C_EXACT_STATES) < max_states
+                                         ? static_cast<std::size_t>(ODESTEP_C_EXACT_STATES)
+                                         : max_states;
 
 /// The padded state of the C API.
 template <class T>
@@ -84,6 +100,18 @@ struct c_accel {
     }
 };
 
+/// The functions of one form and size of a method (see the file's comment): construct the stepper object
+/// of that form and size, and the single steps on the caller's arrays. A step of the other kind of system
+/// than the method's is never bound (the binding checks the kind), so its entry refuses.
+template <class T>
+struct sized_ops {
+    void (*construct)(void* object);
+    /// y' = f: y[0 .. n-1], e1 and e2 (null: not asked for; checked against the method before the call).
+    odestep_status (*step)(void* object, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1, T* e2);
+    /// x'' = a: acc null, a single step (nothing reused from an earlier one); else the caller-kept step.
+    odestep_status (*step_newton)(void* object, const typename c_types<T>::newton* sys, T* x, T* v, T* acc, T t, T dt);
+};
+
 /// A method: what the C functions need to know of a stepper type, and its steps as function pointers.
 template <class T>
 struct method_ops {
@@ -102,6 +130,11 @@ struct method_ops {
     /// `acc`, the caller-kept form of a first-same-as-last method (acc = a(t, x) in, a(t + dt, x) out).
     status (*step_newton)(void* storage, const c_accel<T>& a, state<T>& x, state<T>& v, state<T>* acc, T t, T dt,
                           bool kept);
+    /// The exact single steps of size n (sizes[n - 1]), n up to ODESTEP_C_EXACT_STATES.
+    std::array<sized_ops<T>, exact_states> sizes;
+    /// The single steps on the padded object: for n above ODESTEP_C_EXACT_STATES, and after a loop (so that
+    /// its history goes on).
+    sized_ops<T> padded;
 };
 
 }  // namespace odestep::capi
@@ -133,15 +166,44 @@ struct resettable : std::false_type {};
 template <class S>
 struct resettable<S, std::void_t<decltype(std::declval<S&>().reset())>> : std::true_type {};
 
+// ---- the storage: the binding, then the stepper object
+
+template <class T>
+using stepper_t = typename c_types<T>::stepper;
+
+/// What the object in a stepper's storage was constructed for: n for a first-order system (first_order_n)
+/// or for Newton's equations (newton_n), the other 0; both 0 for none (a zeroed or freshly initialised
+/// stepper). A step is bound when its kind's n equals its n and n is not 0: every n stored is in range.
+template <class T>
+struct binding {
+    std::size_t first_order_n;
+    std::size_t newton_n;
+    sized_ops<T> ops;  // a copy of the bound form's, one load from a call
+};
+
+template <class T>
+constexpr std::size_t object_offset = (sizeof(binding<T>) + alignof(stepper_t<T>) - 1) / alignof(stepper_t<T>) *
+                                      alignof(stepper_t<T>);
+
+template <class T>
+binding<T>& binding_of(stepper_t<T>* s) noexcept {
+    static_assert(alignof(binding<T>) <= alignof(stepper_t<T>));
+    return *std::launder(reinterpret_cast<binding<T>*>(s->storage.bytes));
+}
+template <class T>
+void* object_of(stepper_t<T>* s) noexcept {
+    return s->storage.bytes + object_offset<T>;
+}
+
 /// The function pointers of stepper type S (on state<T>).
 template <class S>
 struct ops_of {
     using T = typename S::value_type;
     static_assert(std::is_same_v<typename S::state_type, state<T>>);
     static_assert(std::is_trivially_destructible_v<S>, "the C API never destroys a stepper object");
-    static_assert(sizeof(S) <= sizeof(std::declval<typename c_types<T>::stepper&>().storage.bytes),
+    static_assert(sizeof(S) + object_offset<T> <= sizeof(std::declval<stepper_t<T>&>().storage.bytes),
                   "odestep: ODESTEP_C_STEPPER_SCALARS is too small for this stepper");
-    static_assert(alignof(S) <= alignof(typename c_types<T>::stepper), "odestep: the stepper storage's alignment");
+    static_assert(alignof(S) <= alignof(stepper_t<T>), "odestep: the stepper storage's alignment");
 
     static S& object(void* storage) noexcept { return *std::launder(static_cast<S*>(storage)); }
 
@@ -184,30 +246,6 @@ struct ops_of {
     }
 };
 
-template <class S>
-constexpr method_ops<typename S::value_type> make_ops(const char* name) noexcept {
-    return {name, S::order, estimates_of<S>::value, S::system == system_form::newtonian, S::uniform_steps,
-            // The most of either step: Dormand-Prince's estimating step makes one more than its plain step.
-            static_cast<unsigned>(S::rhs_evals_per_step > S::rhs_evals_per_error_step ? S::rhs_evals_per_step
-                                                                                      : S::rhs_evals_per_error_step),
-            &ops_of<S>::construct, &ops_of<S>::reset, &ops_of<S>::step, &ops_of<S>::step_newton};
-}
-
-// ---- the C functions, for one precision
-
-template <class T>
-using stepper_t = typename c_types<T>::stepper;
-
-template <class T>
-const method_ops<T>* ops(const stepper_t<T>* s) noexcept {
-    return s->method != nullptr ? &s->method->ops : nullptr;
-}
-
-template <class T>
-bool size_ok(std::size_t n) noexcept {
-    return n >= 1 && n <= max_states;
-}
-
 /// The caller's n values into a padded state: the first n copied, the others zero.
 template <class T>
 ODESTEP_INLINE void load_into(state<T>& s, const T* from, std::size_t n) noexcept {
@@ -228,61 +266,327 @@ ODESTEP_INLINE void store(T* to, const state<T>& s, std::size_t n) noexcept {
     }
 }
 
-/// The checks of a single step: t finite, dt finite and non-zero.
+/// A stepper that refuses (a step of the other kind of system than its method's): never bound, present so
+/// that every entry of a method's table is a function.
 template <class T>
-status check_step(T t, T dt) noexcept {
-    if (!detail::is_finite(t)) return status::invalid_time;
-    if (!detail::is_finite(dt) || dt == T(0)) return status::invalid_step;
+struct refuse {
+    static odestep_status step(void*, const typename c_types<T>::system*, T*, T, T, T*, T*) noexcept {
+        return ODESTEP_INVALID_SETTING;
+    }
+    static odestep_status step_newton(void*, const typename c_types<T>::newton*, T*, T*, T*, T, T) noexcept {
+        return ODESTEP_INVALID_SETTING;
+    }
+};
+
+/// The padded single steps of stepper type S (on state<T>): the caller's n values copied in with zero
+/// padding, the step, the n values copied back on success.
+template <class S>
+struct padded_ops {
+    using T = typename S::value_type;
+    static odestep_status step(void* object, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1, T* e2) {
+        return to_c(run(object, sys, y, t, dt, e1, e2));
+    }
+    static odestep_status step_newton(void* object, const typename c_types<T>::newton* sys, T* x, T* v, T* acc, T t,
+                                      T dt) {
+        return to_c(run_newton(object, sys, x, v, acc, t, dt));
+    }
+    ODESTEP_INLINE static status run(void* object, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1,
+                                     T* e2) {
+        const std::size_t n = sys->n;
+        state<T> ys = load(y, n);
+        if (e1 == nullptr) {  // the plain step: no estimate arrays at all
+            const status r = ops_of<S>::step(object, c_rhs<T>{sys}, ys, t, dt, nullptr, nullptr);
+            if (r == status::ok) store(y, ys, n);
+            return r;
+        }
+        state<T> err1{};
+        state<T> err2{};
+        const status r = ops_of<S>::step(object, c_rhs<T>{sys}, ys, t, dt, &err1, e2 != nullptr ? &err2 : nullptr);
+        if (r == status::ok) {
+            store(y, ys, n);
+            store(e1, err1, n);
+            if (e2 != nullptr) store(e2, err2, n);
+        }
+        return r;
+    }
+    ODESTEP_INLINE static status run_newton(void* object, const typename c_types<T>::newton* sys, T* x, T* v, T* acc,
+                                            T t, T dt) {
+        const std::size_t n = sys->n;
+        state<T> xs = load(x, n);
+        state<T> vs = load(v, n);
+        state<T> as{};
+        if (acc != nullptr) load_into(as, acc, n);
+        const status r =
+            ops_of<S>::step_newton(object, c_accel<T>{sys}, xs, vs, acc != nullptr ? &as : nullptr, t, dt, false);
+        if (r == status::ok) {
+            store(x, xs, n);
+            store(v, vs, n);
+            if (acc != nullptr) store(acc, as, n);
+        }
+        return r;
+    }
+};
+
+/// The exact single steps of stepper type S on std::array<T, N>, N the caller's n: the user's f called
+/// with the step's own arrays, no padding, nothing zeroed.
+template <class S>
+struct exact_ops {
+    using T = typename S::value_type;
+    using A = typename S::state_type;
+    static constexpr std::size_t N = std::tuple_size<A>::value;
+    static_assert(sizeof(S) + object_offset<T> <= sizeof(std::declval<stepper_t<T>&>().storage.bytes),
+                  "odestep: ODESTEP_C_STEPPER_SCALARS is too small for this stepper");
+    static_assert(alignof(S) <= alignof(stepper_t<T>), "odestep: the stepper storage's alignment");
+    static_assert(std::is_trivially_destructible_v<S>, "the C API never destroys a stepper object");
+
+    static S& object(void* storage) noexcept { return *std::launder(static_cast<S*>(storage)); }
+    static void construct(void* storage) noexcept { ::new (storage) S(); }
+
+    ODESTEP_INLINE static A load(const T* from) noexcept {
+        A s;
+        ODESTEP_UNROLL
+        for (std::size_t i = 0; i < N; ++i) s[i] = from[i];
+        return s;
+    }
+    ODESTEP_INLINE static void store(T* to, const A& s) noexcept {
+        ODESTEP_UNROLL
+        for (std::size_t i = 0; i < N; ++i) to[i] = s[i];
+    }
+
+    static odestep_status step(void* object, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1, T* e2) {
+        return to_c(run(object, sys, y, t, dt, e1, e2));
+    }
+    static odestep_status step_newton(void* object, const typename c_types<T>::newton* sys, T* x, T* v, T* acc, T t,
+                                      T dt) {
+        return to_c(run_newton(object, sys, x, v, acc, t, dt));
+    }
+    ODESTEP_INLINE static status run(void* storage, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1,
+                                     T* e2) {
+        const auto fn = sys->f;
+        void* const ctx = sys->ctx;
+        const auto f = [fn, ctx](T tt, const A& yy, A& dydt) { fn(tt, yy.data(), dydt.data(), ctx); };
+        S& s = object(storage);
+        A ys = load(y);
+        if constexpr (estimates_of<S>::value >= 1) {
+            if (e1 != nullptr) {
+                A err1;  // written by the step on success, read only then
+                status r = status::ok;
+                if constexpr (estimates_of<S>::value >= 2) {
+                    A err2;
+                    if (e2 != nullptr) {
+                        r = s.step(f, ys, t, dt, err1, err2);
+                        if (r == status::ok) store(e2, err2);
+                    } else {
+                        r = s.step(f, ys, t, dt, err1);
+                    }
+                } else {
+                    r = s.step(f, ys, t, dt, err1);
+                }
+                if (r == status::ok) {
+                    store(y, ys);
+                    store(e1, err1);
+                }
+                return r;
+            }
+        }
+        const status r = s.step(f, ys, t, dt);
+        if (r == status::ok) store(y, ys);
+        return r;
+    }
+
+    ODESTEP_INLINE static status run_newton(void* storage, const typename c_types<T>::newton* sys, T* x, T* v, T* acc,
+                                            T t, T dt) {
+        const auto fn = sys->a;
+        void* const ctx = sys->ctx;
+        const auto a = [fn, ctx](T tt, const A& xx) {
+            A out;  // every component written by the user's a
+            fn(tt, xx.data(), out.data(), ctx);
+            return out;
+        };
+        S& s = object(storage);
+        A xs = load(x);
+        A vs = load(v);
+        status r = status::ok;
+        if (acc != nullptr) {
+            if constexpr (caller_kept<S>::value) {
+                A as = load(acc);
+                r = s.step(a, xs, vs, as, t, dt);
+                if (r == status::ok) store(acc, as);
+            } else {
+                return status::invalid_setting;  // no acceleration to keep: not first same as last
+            }
+        } else {
+            // A single step's x is a copy that lives as long as the call: a kept acceleration would be
+            // matched by that copy's address alone, so it is forgotten first (the step evaluates afresh).
+            if constexpr (resettable<S>::value) s.reset();
+            r = s.step(a, xs, vs, t, dt);
+        }
+        if (r == status::ok) {
+            store(x, xs);
+            store(v, vs);
+        }
+        return r;
+    }
+};
+
+template <class T, class Family>
+constexpr sized_ops<T> padded_of() noexcept {
+    using S = typename Family::template type<state<T>>;
+    if constexpr (S::system == system_form::newtonian) {
+        return {&ops_of<S>::construct, &refuse<T>::step, &padded_ops<S>::step_newton};
+    } else {
+        return {&ops_of<S>::construct, &padded_ops<S>::step, &refuse<T>::step_newton};
+    }
+}
+
+/// The exact single steps of a method (Family::type<State> its stepper on State) for size N.
+template <class T, class Family, std::size_t N>
+constexpr sized_ops<T> sized() noexcept {
+    using S = typename Family::template type<std::array<T, N>>;
+    using E = exact_ops<S>;
+    if constexpr (S::system == system_form::newtonian) {
+        return {&E::construct, &refuse<T>::step, &E::step_newton};
+    } else {
+        return {&E::construct, &E::step, &refuse<T>::step_newton};
+    }
+}
+
+template <class T, class Family, std::size_t... I>
+constexpr std::array<sized_ops<T>, exact_states> sizes_of(std::index_sequence<I...>) noexcept {
+    return {{sized<T, Family, I + 1>()...}};
+}
+
+/// The method object of Family (a struct whose member template type<State> is the method's stepper).
+template <class T, class Family>
+constexpr method_ops<T> make_ops(const char* name) noexcept {
+    using S = typename Family::template type<state<T>>;
+    return {name, S::order, estimates_of<S>::value, S::system == system_form::newtonian, S::uniform_steps,
+            // The most of either step: Dormand-Prince's estimating step makes one more than its plain step.
+            static_cast<unsigned>(S::rhs_evals_per_step > S::rhs_evals_per_error_step ? S::rhs_evals_per_step
+                                                                                      : S::rhs_evals_per_error_step),
+            &ops_of<S>::construct, &ops_of<S>::reset, &ops_of<S>::step, &ops_of<S>::step_newton,
+            sizes_of<T, Family>(std::make_index_sequence<exact_states>{}), padded_of<T, Family>()};
+}
+
+// ---- the C functions, for one precision
+
+template <class T>
+const method_ops<T>* ops(const stepper_t<T>* s) noexcept {
+    return s->method != nullptr ? &s->method->ops : nullptr;
+}
+
+template <class T>
+bool size_ok(std::size_t n) noexcept {
+    return n >= 1 && n <= max_states;
+}
+
+/// The checks of a single step: t finite, dt finite and non-zero. The common case in two tests: (t - t) +
+/// (dt - dt) is +0 when both are finite and NaN otherwise (IEEE 754: Inf - Inf is NaN), and only NaN
+/// compares unequal to itself; then dt's bits without the sign are not all zero (dt is not +-0), one
+/// integer test.
+template <class T>
+ODESTEP_INLINE status check_step(T t, T dt) noexcept {
+    static_assert(std::numeric_limits<T>::is_iec559 && (sizeof(T) == 4 || sizeof(T) == 8));
+    using bits_t = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+    const T d = (t - t) + (dt - dt);
+    bits_t dt_bits;
+    std::memcpy(&dt_bits, &dt, sizeof dt_bits);
+    if (ODESTEP_UNLIKELY(!(d == d)) || ODESTEP_UNLIKELY(static_cast<bits_t>(dt_bits << 1) == 0)) {
+        if (!detail::is_finite(t)) return status::invalid_time;
+        return status::invalid_step;
+    }
     return status::ok;
 }
 
+/// The single-step functions of size n (in range): exact up to exact_states, else padded.
 template <class T>
-odestep_status step(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1, T* e2) {
-    const method_ops<T>* m = s != nullptr ? ops<T>(s) : nullptr;
-    if (ODESTEP_UNLIKELY(m == nullptr || sys == nullptr || sys->f == nullptr || y == nullptr || !size_ok<T>(sys->n) ||
-                         m->newtonian))
-        return ODESTEP_INVALID_SETTING;
-    const status checked = check_step(t, dt);
-    if (ODESTEP_UNLIKELY(checked != status::ok)) return to_c(checked);
-    const std::size_t n = sys->n;
-    state<T> ys = load(y, n);
-    if (e1 == nullptr) {  // the plain step: no estimate arrays at all
-        const status r = m->step(s->storage.bytes, c_rhs<T>{sys}, ys, t, dt, nullptr, nullptr);
-        if (r == status::ok) store(y, ys, n);
-        return to_c(r);
+const sized_ops<T>* form_for(const method_ops<T>* m, std::size_t n) noexcept {
+    if constexpr (exact_states > 0) {
+        if (n <= exact_states) return &m->sizes[n - 1];
     }
-    if (m->error_estimates < 1 || (e2 != nullptr && m->error_estimates < 2)) return ODESTEP_INVALID_SETTING;
-    state<T> err1{};
-    state<T> err2{};
-    const status r = m->step(s->storage.bytes, c_rhs<T>{sys}, ys, t, dt, &err1, e2 != nullptr ? &err2 : nullptr);
-    if (r == status::ok) {
-        store(y, ys, n);
-        store(e1, err1, n);
-        if (e2 != nullptr) store(e2, err2, n);
-    }
-    return to_c(r);
+    return &m->padded;
 }
 
+/// Binds the stepper's storage to `form` for n (of Newton's equations if `newton`): the object constructed
+/// afresh.
 template <class T>
-odestep_status step_newton(stepper_t<T>* s, const typename c_types<T>::newton* sys, T* x, T* v, T* acc, T t, T dt) {
-    const method_ops<T>* m = s != nullptr ? ops<T>(s) : nullptr;
-    if (m == nullptr || sys == nullptr || sys->a == nullptr || x == nullptr || v == nullptr || !size_ok<T>(sys->n) ||
-        !m->newtonian)
-        return ODESTEP_INVALID_SETTING;
+void bind(stepper_t<T>* s, std::size_t n, bool newton, const sized_ops<T>* form) noexcept {
+    binding<T>& b = binding_of<T>(s);
+    form->construct(object_of<T>(s));
+    b.first_order_n = newton ? 0 : n;
+    b.newton_n = newton ? n : 0;
+    b.ops = *form;
+}
+
+/// Forgets the binding: the next single step constructs its object afresh.
+template <class T>
+void unbind(stepper_t<T>* s) noexcept {
+    binding<T>& b = binding_of<T>(s);
+    b.first_order_n = 0;
+    b.newton_n = 0;
+    b.ops = {};
+}
+
+/// A single step of y' = f whose stepper is not bound to its n (the first step, or one with another n or
+/// after a reset): the checks a bound step skips, then the binding (the object constructed afresh).
+template <class T>
+[[gnu::noinline, gnu::cold]] odestep_status step_unbound(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y,
+                                                         T t, T dt, T* e1, T* e2) {
+    const method_ops<T>* m = ops<T>(s);
+    const std::size_t n = sys->n;
+    if (m == nullptr || !size_ok<T>(n) || m->newtonian) return ODESTEP_INVALID_SETTING;
     const status checked = check_step(t, dt);
     if (checked != status::ok) return to_c(checked);
-    state<T> xs = load(x, sys->n);
-    state<T> vs = load(v, sys->n);
-    state<T> as{};
-    if (acc != nullptr) load_into(as, acc, sys->n);
-    const status r =
-        m->step_newton(s->storage.bytes, c_accel<T>{sys}, xs, vs, acc != nullptr ? &as : nullptr, t, dt, false);
-    if (r == status::ok) {
-        store(x, xs, sys->n);
-        store(v, vs, sys->n);
-        if (acc != nullptr) store(acc, as, sys->n);
+    if (e1 != nullptr && (m->error_estimates < 1 || (e2 != nullptr && m->error_estimates < 2)))
+        return ODESTEP_INVALID_SETTING;
+    bind<T>(s, n, false, form_for(m, n));
+    return binding_of<T>(s).ops.step(object_of<T>(s), sys, y, t, dt, e1, e2);
+}
+
+/// A single step of y' = f. The stepper bound to this n and kind (one compare) had the method and n
+/// checked when it was bound; the rest is the checks of the step's arguments and a tail call.
+template <class T>
+ODESTEP_INLINE odestep_status step(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1,
+                                   T* e2) {
+    if (ODESTEP_UNLIKELY(s == nullptr || sys == nullptr || sys->f == nullptr || y == nullptr))
+        return ODESTEP_INVALID_SETTING;
+    const binding<T>& b = binding_of<T>(s);
+    const std::size_t n = sys->n;
+    if (ODESTEP_UNLIKELY(b.first_order_n != n || n == 0)) return step_unbound<T>(s, sys, y, t, dt, e1, e2);
+    const status checked = check_step(t, dt);
+    if (ODESTEP_UNLIKELY(checked != status::ok)) return to_c(checked);
+    if (e1 != nullptr) {
+        const method_ops<T>* m = ops<T>(s);
+        if (m->error_estimates < 1 || (e2 != nullptr && m->error_estimates < 2)) return ODESTEP_INVALID_SETTING;
     }
-    return to_c(r);
+    return b.ops.step(object_of<T>(s), sys, y, t, dt, e1, e2);
+}
+
+/// step_unbound for x'' = a.
+template <class T>
+[[gnu::noinline, gnu::cold]] odestep_status step_newton_unbound(stepper_t<T>* s, const typename c_types<T>::newton* sys,
+                                                                T* x, T* v, T* acc, T t, T dt) {
+    const method_ops<T>* m = ops<T>(s);
+    const std::size_t n = sys->n;
+    if (m == nullptr || !size_ok<T>(n) || !m->newtonian) return ODESTEP_INVALID_SETTING;
+    const status checked = check_step(t, dt);
+    if (checked != status::ok) return to_c(checked);
+    bind<T>(s, n, true, form_for(m, n));
+    return binding_of<T>(s).ops.step_newton(object_of<T>(s), sys, x, v, acc, t, dt);
+}
+
+/// A single step of x'' = a, as step.
+template <class T>
+ODESTEP_INLINE odestep_status step_newton(stepper_t<T>* s, const typename c_types<T>::newton* sys, T* x, T* v, T* acc,
+                                          T t, T dt) {
+    if (ODESTEP_UNLIKELY(s == nullptr || sys == nullptr || sys->a == nullptr || x == nullptr || v == nullptr))
+        return ODESTEP_INVALID_SETTING;
+    const binding<T>& b = binding_of<T>(s);
+    const std::size_t n = sys->n;
+    if (ODESTEP_UNLIKELY(b.newton_n != n || n == 0)) return step_newton_unbound<T>(s, sys, x, v, acc, t, dt);
+    const status checked = check_step(t, dt);
+    if (ODESTEP_UNLIKELY(checked != status::ok)) return to_c(checked);
+    return b.ops.step_newton(object_of<T>(s), sys, x, v, acc, t, dt);
 }
 
 /// The stepper of the loops: the C method behind the stepper interface the C++ loops take. Its traits are
@@ -340,9 +644,11 @@ odestep_status integrate(stepper_t<T>* s, const typename c_types<T>::system* sys
         return ODESTEP_INVALID_SETTING;
     const status uniform = check_uniform(m, t0, t1, dt);
     if (uniform != status::ok) return to_c(uniform);
-    m->reset(s->storage.bytes);
+    // The loop's object: padded, constructed afresh (an empty history), and bound, so that single steps of
+    // the same n continue its history.
+    bind<T>(s, sys->n, false, &m->padded);
     state<T> ys = load(y, sys->n);
-    const first_order_adapter<T> stepper{{}, m, s->storage.bytes};
+    const first_order_adapter<T> stepper{{}, m, object_of<T>(s)};
     const c_rhs<T> f{sys};
     const auto watch = [observe, octx](T t, const state<T>& at) {
         if (observe != nullptr) observe(t, at.data(), octx);
@@ -364,10 +670,10 @@ odestep_status integrate_newton(stepper_t<T>* s, const typename c_types<T>::newt
         return ODESTEP_INVALID_SETTING;
     const status uniform = check_uniform(m, t0, t1, dt);
     if (uniform != status::ok) return to_c(uniform);
-    m->reset(s->storage.bytes);
+    bind<T>(s, sys->n, true, &m->padded);  // as integrate's
     state<T> xs = load(x, sys->n);
     state<T> vs = load(v, sys->n);
-    const newton_adapter<T> stepper{{}, m, s->storage.bytes};
+    const newton_adapter<T> stepper{{}, m, object_of<T>(s)};
     const c_accel<T> a{sys};
     const auto watch = [observe, octx](T t, const state<T>& px, const state<T>& pv) {
         if (observe != nullptr) observe(t, px.data(), pv.data(), octx);
@@ -383,14 +689,14 @@ template <class T>
 odestep_status init(stepper_t<T>* s, const typename c_types<T>::method* method) {
     if (s == nullptr || method == nullptr) return ODESTEP_INVALID_SETTING;
     s->method = method;
-    ops<T>(s)->construct(s->storage.bytes);
+    unbind<T>(s);  // the object is constructed by the first step, for its n
     return ODESTEP_OK;
 }
 
 template <class T>
 void reset(stepper_t<T>* s) {
-    const method_ops<T>* m = s != nullptr ? ops<T>(s) : nullptr;
-    if (m != nullptr) m->reset(s->storage.bytes);
+    // An empty history: the next step constructs its object afresh.
+    if (s != nullptr && s->method != nullptr) unbind<T>(s);
 }
 
 inline odestep_status info(const void* ops_or_null, const char* name, int order, int estimates, bool newtonian,

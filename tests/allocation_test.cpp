@@ -219,6 +219,8 @@ std::size_t allocations_of_implicit_calls() {
     run(odestep::radau_iia5<s>{});
     run(odestep::radau_iia5<s, odestep::fixed_newton<2>>{});
     run(odestep::rodas3<s>{});
+    run(odestep::radau5_substeps<s, 64>{});
+    run(odestep::rodas4_substeps<s, 64>{});
     // and an event loop driving an implicit stepper
     s y{T(1), T(1), T(1)};
     auto g = [](T, const s& v) { return v[0] - T(5); };

@@ -115,6 +115,8 @@ T run_everything() {
     add_implicit(odestep::radau_iia5<state4<T>>{});
     add_implicit(odestep::radau_iia5<state4<T>, odestep::fixed_newton<3>>{});
     add_implicit(odestep::rodas3<state4<T>>{});
+    add_implicit(odestep::radau5_substeps<state4<T>, 64>{});
+    add_implicit(odestep::rodas4_substeps<state4<T>, 64>{});
     // and the error-controlled steppers: the step size and the kept stage live in the objects
     auto add_adaptive = [&](auto method) {
         using M = decltype(method);

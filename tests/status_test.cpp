@@ -24,7 +24,8 @@ TEST_CASE("status: every value has its own name") {
                           status::singular_matrix,
                           status::substep_limit,
                           status::step_too_small,
-                          status::invalid_setting};
+                          status::invalid_setting,
+                          status::storage_full};
     for (std::size_t i = 0; i < std::size(all); ++i)
         for (std::size_t j = i + 1; j < std::size(all); ++j)
             CHECK(std::strcmp(to_string(all[i]), to_string(all[j])) != 0);

@@ -152,7 +152,7 @@ integrate_result<T> drive(Stepper& stepper, System& f, Observer& observe, status
 /// Integrates y' = f(t, y) from t0 to exactly t1 with steps of dt (negative dt integrates backwards). The
 /// step times are t0 + i dt from an integer counter; the last step ends on t1, shortened when t1 - t0 is
 /// not a whole number of steps (to the grid's rounding). A stepper that needs equal steps (uniform_steps:
-/// Adams, Boris) refuses a run whose last step would be shortened, with status::step_mismatch. The observer
+/// Adams) refuses a run whose last step would be shortened, with status::step_mismatch. The observer
 /// is called as observe(t, y) with the initial state and after every step.
 ///
 /// Bad arguments return a status before anything is touched. A step that produces NaN or Inf is rolled

@@ -30,6 +30,8 @@ enum class [[nodiscard]] status : unsigned char {
     step_too_small,     ///< an adaptive step size fell below what the time's precision resolves; rolled back
     invalid_setting,    ///< a setting other than a tolerance (a limit, a cap, a controller parameter) is out of
                         ///< its range; nothing was touched
+    storage_full,       ///< caller-provided storage (an adaptive run's solution) is full; the state is the last
+                        ///< accepted one, at the returned time, and the storage holds the run up to there
 };
 // clang-format on
 
@@ -52,6 +54,7 @@ constexpr const char* to_string(status s) noexcept {
         case status::substep_limit: return "substep_limit";
         case status::step_too_small: return "step_too_small";
         case status::invalid_setting: return "invalid_setting";
+        case status::storage_full: return "storage_full";
     }
     return "unknown";
 }

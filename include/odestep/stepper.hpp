@@ -90,9 +90,9 @@ struct stepper_defaults {
     /// The state at a step's end is the state at that time, and no step needs a state prepared by another
     /// call (Boris: v must be staggered first, so false).
     static constexpr bool self_starting = true;
-    /// Every step must have the same dt: a history on a grid (Adams) or a velocity staggered by dt / 2
-    /// (Boris). `integrate` refuses, with status::step_mismatch and nothing touched, a run whose last
-    /// step would be shortened.
+    /// Every step must have the same dt: a history on a grid (Adams; Boris takes a shortened last step, at
+    /// an O(dt^2) cost, see boris.hpp). `integrate` refuses, with status::step_mismatch and nothing
+    /// touched, a run whose last step would be shortened.
     static constexpr bool uniform_steps = false;
     /// The form of system the stepper takes.
     static constexpr system_form system = system_form::first_order;

@@ -16,7 +16,8 @@ namespace odestep {
 enum class system_form : unsigned char {
     first_order,       ///< y' = f(t, y): `State f(T t, const State& y)` or `void f(T t, const State& y, State& dydt)`
     newtonian,         ///< x'' = a: `State a(T t, const State& x)`, or `State a(T t, const State& x, const State& v)`
-                       ///< where the stepper accepts it
+                       ///< where the stepper accepts it; or either in place, `void a(T t, const State& x,
+                       ///< State& a_out)`, `void a(T t, const State& x, const State& v, State& a_out)`
     charged_particle,  ///< dv/dt = (q/m)(E + v x B): `void fields(T t, const State& x, State& E, State& B)`
 };
 
@@ -144,34 +145,67 @@ constexpr system_with_jacobian<F, J> with_jacobian(F&& f, J&& jacobian) {
     return {std::forward<F>(f), std::forward<J>(jacobian)};
 }
 
-// ---- Newton's equations: x'' = a(t, x) or a(t, x, v)
+// ---- Newton's equations: x'' = a(t, x) or a(t, x, v), returned or written in place
 
 namespace detail {
+// The in-place forms: callable with a State& to write into, and returning void (or anything but a State).
 template <class Accel, class State, class T, class = void>
-struct position_force : std::false_type {};
+struct inplace_position_force : std::false_type {};
 template <class Accel, class State, class T>
-struct position_force<Accel, State, T,
-                      std::enable_if_t<std::is_convertible_v<std::invoke_result_t<Accel&, T, const State&>, State>>>
+struct inplace_position_force<
+    Accel, State, T,
+    std::enable_if_t<!std::is_convertible_v<std::invoke_result_t<Accel&, T, const State&, State&>, State>>>
     : std::true_type {};
 template <class Accel, class State, class T, class = void>
-struct velocity_force : std::false_type {};
+struct inplace_velocity_force : std::false_type {};
 template <class Accel, class State, class T>
-struct velocity_force<
+struct inplace_velocity_force<Accel, State, T,
+                              std::enable_if_t<!std::is_convertible_v<
+                                  std::invoke_result_t<Accel&, T, const State&, const State&, State&>, State>>>
+    : std::true_type {};
+template <class Accel, class State, class T, class = void>
+struct returning_position_force : std::false_type {};
+template <class Accel, class State, class T>
+struct returning_position_force<
+    Accel, State, T, std::enable_if_t<std::is_convertible_v<std::invoke_result_t<Accel&, T, const State&>, State>>>
+    : std::true_type {};
+template <class Accel, class State, class T, class = void>
+struct returning_velocity_force_call : std::false_type {};
+template <class Accel, class State, class T>
+struct returning_velocity_force_call<
     Accel, State, T,
     std::enable_if_t<std::is_convertible_v<std::invoke_result_t<Accel&, T, const State&, const State&>, State>>>
     : std::true_type {};
+// `State a(t, x, v)` has the arity of the in-place `a(t, x, a_out)`: the in-place form is asked first, and
+// the returning one only where it is not (std::conjunction instantiates no further), so that a generic
+// `a(auto t, const auto& x, auto& out)` is never called with a const out, which would not compile.
+template <class Accel, class State, class T>
+struct returning_velocity_force : std::conjunction<std::negation<inplace_position_force<Accel, State, T>>,
+                                                   returning_velocity_force_call<Accel, State, T>> {};
 }  // namespace detail
 
-/// True when the acceleration is written `State a(T t, const State& x)`: a force of position alone, the
-/// case in which splitting methods are symplectic.
+/// True when the acceleration is written `void a(T t, const State& x, State& a_out)`: a force of position
+/// alone, written into its last argument (no State returned: what a large state wants).
 template <class Accel, class State, class T = value_type_t<State>>
-inline constexpr bool is_position_force_v = detail::position_force<Accel, State, T>::value;
+inline constexpr bool is_inplace_position_force_v = detail::inplace_position_force<Accel, State, T>::value;
 
-/// True when the acceleration is written `State a(T t, const State& x, const State& v)`.
+/// True when the acceleration is written `void a(T t, const State& x, const State& v, State& a_out)`.
 template <class Accel, class State, class T = value_type_t<State>>
-inline constexpr bool is_velocity_force_v = detail::velocity_force<Accel, State, T>::value;
+inline constexpr bool is_inplace_velocity_force_v = detail::inplace_velocity_force<Accel, State, T>::value;
 
-/// A Newtonian system x'' = a(...) in either accepted form.
+/// True when the acceleration is a force of position alone, `State a(T t, const State& x)` or
+/// `void a(T t, const State& x, State& a_out)`: the case in which splitting methods are symplectic.
+template <class Accel, class State, class T = value_type_t<State>>
+inline constexpr bool is_position_force_v =
+    detail::returning_position_force<Accel, State, T>::value || is_inplace_position_force_v<Accel, State, T>;
+
+/// True when the acceleration is written `State a(T t, const State& x, const State& v)` or
+/// `void a(T t, const State& x, const State& v, State& a_out)`.
+template <class Accel, class State, class T = value_type_t<State>>
+inline constexpr bool is_velocity_force_v =
+    detail::returning_velocity_force<Accel, State, T>::value || is_inplace_velocity_force_v<Accel, State, T>;
+
+/// A Newtonian system x'' = a(...) in any accepted form.
 template <class Accel, class State>
 inline constexpr bool is_newtonian_system_v = is_position_force_v<Accel, State> || is_velocity_force_v<Accel, State>;
 
@@ -210,30 +244,41 @@ constexpr void evaluate_jacobian(System& f, T t, const State& y, jacobian_t<Stat
     }
 }
 
-// a(t, x, v), whichever form the user wrote (a position-only force ignores v).
+// a(t, x) for the methods that need a force of position alone.
 template <class Accel, class State, class T>
-constexpr State acceleration(Accel& a, T t, const State& x, const State& v) {
-    if constexpr (is_velocity_force_v<Accel, State, T>) {
-        return a(t, x, v);
+constexpr State acceleration(Accel& a, T t, const State& x) {
+    if constexpr (is_inplace_position_force_v<Accel, State, T>) {
+        State out;  // written by a
+        a(t, x, out);
+        return out;
     } else if constexpr (is_position_force_v<Accel, State, T>) {
-        (void)v;
         return a(t, x);
     } else {
-        static_assert(is_newtonian_system_v<Accel, State>,
-                      "odestep: the acceleration must be callable as `State a(T t, const State& x, const State& v)` "
-                      "or `State a(T t, const State& x)`, with State = std::array<T, N>");
+        static_assert(is_position_force_v<Accel, State, T>,
+                      "odestep: this method needs a force of position alone, written `State a(T t, const State& x)` "
+                      "or `void a(T t, const State& x, State& a_out)`");
         return x;
     }
 }
 
-// a(t, x) for the methods that need a force of position alone.
+// a(t, x, v), whichever form the user wrote (a position-only force ignores v). An in-place form writes into
+// the returned object itself (named return value: no copy).
 template <class Accel, class State, class T>
-constexpr State acceleration(Accel& a, T t, const State& x) {
-    if constexpr (is_position_force_v<Accel, State, T>) {
-        return a(t, x);
+constexpr State acceleration(Accel& a, T t, const State& x, const State& v) {
+    if constexpr (is_inplace_velocity_force_v<Accel, State, T>) {
+        State out;  // written by a
+        a(t, x, v, out);
+        return out;
+    } else if constexpr (is_velocity_force_v<Accel, State, T>) {
+        return a(t, x, v);
+    } else if constexpr (is_position_force_v<Accel, State, T>) {
+        (void)v;
+        return acceleration(a, t, x);
     } else {
-        static_assert(is_position_force_v<Accel, State, T>,
-                      "odestep: this method needs a force of position alone, written `State a(T t, const State& x)`");
+        static_assert(is_newtonian_system_v<Accel, State>,
+                      "odestep: the acceleration must be callable as `State a(T t, const State& x, const State& v)`, "
+                      "`State a(T t, const State& x)`, or in place as `void a(T t, const State& x, const State& v, "
+                      "State& a_out)` or `void a(T t, const State& x, State& a_out)`, with State = std::array<T, N>");
         return x;
     }
 }

@@ -12,7 +12,9 @@ set y2tics
 set xrange [0:10.5]
 set yrange [0:140]
 set y2range [-52:52]
-set key below
+# The key in its own band under the x label (`key below` alone lets the label and the box overlap).
+set bmargin 7
+set key at screen 0.5, screen 0.015 center bottom horizontal maxrows 2 width 2
 g = 9.8; v0 = 50.0
 free(t) = (t <= 2*v0/g) ? v0*t - g*t*t/2 : NaN
 freev(t) = (t <= 2*v0/g) ? v0 - g*t : NaN

@@ -9,7 +9,13 @@
 // the enum; after a rejected argument nothing evaluated, observed or touched; no more evaluations than
 // rhs_evals_to_start + max_attempts * rhs_evals_per_attempt; observer times finite, monotone, inside the span
 // (integrate_times: exactly the times asked for, in order); an ok run ends at t1 with the last observed state;
-// any other status leaves y the last observed state, bit for bit, at r.t; no ok run from an f that gave NaN.
+// any other status leaves y the last observed state, bit for bit, at r.t; no ok run from an f that gave NaN;
+// no call of f after it gave NaN or Inf. (3) The solution object (integrate_adaptive into a solution of 16
+// steps): the solution's span ends at r.t with y there bit for bit (storage_full when it filled first), every
+// query inside the span ok and finite or non_finite, outside it invalid_time with out untouched. (4)
+// adaptive_sampler with drawn times one at a time: a time going back or out of [t0, t1] is refused with
+// invalid_time and nothing evaluated; each call within rhs_evals_to_start + max_attempts * (attempt +
+// interpolant) evaluations; ok outputs finite; a failure leaves y_out untouched.
 #include <odestep/adaptive.hpp>
 #include <odestep/odestep.hpp>
 
@@ -163,9 +169,17 @@ void run_free(reader& in) {
         check.times = times.data();
         check.count = times.size();
     }
-    auto rhs = [&f](T t, const S& x) { return f(t, x); };
+    bool gave_non_finite = false;
+    unsigned after_non_finite = 0;
+    auto rhs = [&](T t, const S& x) {
+        if (gave_non_finite) ++after_non_finite;
+        const S out = f(t, x);
+        if (!finite(out)) gave_non_finite = true;
+        return out;
+    };
     const auto r = sample ? odestep::integrate_times(engine, rhs, y, t0, times, check, max_attempts)
                           : odestep::integrate_adaptive(engine, rhs, y, t0, t1, check, max_attempts);
+    ODESTEP_FUZZ_CHECK(after_non_finite == 0, "f called again after it gave NaN or Inf");
     ODESTEP_FUZZ_TRACE(
         "result %s t=%.17g steps=%llu evaluations %u (%zu stages, fsal %d, max_attempts %llu, "
         "rejected %llu)\n",
@@ -199,8 +213,118 @@ void run_free(reader& in) {
     }
 }
 
+// --- (3) the solution object, (4) adaptive_sampler ---------------------------------------------------------------
+
+template <class Method, class T>
+void run_solution(reader& in) {
+    using S = state<T>;
+    using engine_t = odestep::adaptive_rk<Method, S>;
+    constexpr std::size_t capacity = 16;
+    script<T, 2> f;
+    f.read(in);
+    engine_t engine(draw_tolerances<T>(in), draw_control<T>(in));
+    if (in.flag()) engine.set_step_size(in.number<T>());
+    S y{in.number<T>(), in.number<T>()};
+    const T t0 = in.number<T>();
+    const T t1 = in.flag() ? in.number<T>() : t0 + in.number<T>();
+    const odestep::step_count max_attempts = in.byte() % 200;
+    const S initial = y;
+    odestep::solution<Method, S, capacity> sol;
+    auto rhs = [&f](T t, const S& x) { return f(t, x); };
+    const auto r = odestep::integrate_adaptive(engine, rhs, y, t0, t1, sol, max_attempts);
+    ODESTEP_FUZZ_TRACE("solution: %s t=%.17g steps=%llu held %zu\n", odestep::to_string(r.status),
+                       static_cast<double>(r.t), static_cast<unsigned long long>(r.steps), sol.size());
+    ODESTEP_FUZZ_CHECK(valid(r.status), "a status outside the enum");
+    const std::uint64_t bound =
+        engine_t::rhs_evals_to_start +
+        max_attempts * (engine_t::rhs_evals_per_attempt + odestep::dense_step<Method, S>::rhs_evals_to_complete);
+    ODESTEP_FUZZ_CHECK(f.evaluations <= bound, "more evaluations than the published bound");
+    S out{T(7), T(7)};
+    if (rejects_argument(r.status)) {
+        ODESTEP_FUZZ_CHECK(f.evaluations == 0 && r.steps == 0 && same_bits(y, initial), "a rejected argument ran");
+        ODESTEP_FUZZ_CHECK(sol(t0, out) == odestep::status::invalid_time, "a refused run left a solution");
+        return;
+    }
+    ODESTEP_FUZZ_CHECK(sol.size() <= capacity && sol.size() <= r.steps, "a solution holds more than its steps");
+    ODESTEP_FUZZ_CHECK(sol.t_first() == t0, "a solution that does not start at t0");
+    ODESTEP_FUZZ_CHECK(r.status != odestep::status::storage_full || sol.full(), "storage_full, and room left");
+    ODESTEP_FUZZ_CHECK(r.status != odestep::status::ok || r.t == t1, "an ok run that did not end at t1");
+    // The solution ends where y is, except after an interpolant that could not be completed (non_finite).
+    if (sol.t_last() == r.t) {
+        ODESTEP_FUZZ_CHECK(sol(r.t, out) == odestep::status::ok && same_bits(out, y),
+                           "the solution's end is not y at r.t");
+    } else {
+        ODESTEP_FUZZ_CHECK(r.status == odestep::status::non_finite, "a solution that does not end at r.t");
+    }
+    const bool forward = !(t1 < t0);
+    const T ends[2] = {sol.t_first(), sol.t_last()};
+    for (int k = 0; k < 8; ++k) {
+        const T t = k < 6 ? ends[0] + (ends[1] - ends[0]) * static_cast<T>(k) / T(5) : in.number<T>();
+        S u{T(7), T(7)};
+        const odestep::status q = sol(t, u);
+        const bool inside =
+            std::isfinite(t) && (forward ? (t >= ends[0] && t <= ends[1]) : (t <= ends[0] && t >= ends[1]));
+        if (inside) {
+            ODESTEP_FUZZ_CHECK(q == odestep::status::ok || q == odestep::status::non_finite,
+                               "a query in the span refused");
+        } else {
+            ODESTEP_FUZZ_CHECK(q == odestep::status::invalid_time, "a query outside the span not invalid_time");
+        }
+        if (q == odestep::status::ok)
+            ODESTEP_FUZZ_CHECK(finite(u) || (t == ends[0] && same_bits(u, initial)), "a query gave a state not finite");
+        else
+            ODESTEP_FUZZ_CHECK(u[0] == T(7) && u[1] == T(7), "a refused query wrote its output");
+    }
+}
+
+template <class Method, class T>
+void run_sampler(reader& in) {
+    using S = state<T>;
+    using engine_t = odestep::adaptive_rk<Method, S>;
+    script<T, 2> f;
+    f.read(in);
+    engine_t engine(draw_tolerances<T>(in), draw_control<T>(in));
+    S y{in.number<T>(), in.number<T>()};
+    const T t0 = in.number<T>();
+    const T t1 = in.flag() ? in.number<T>() : t0 + in.number<T>();
+    const odestep::step_count max_attempts = in.byte() % 64;
+    odestep::adaptive_sampler<Method, S> sampler(engine, t0, y, t1, max_attempts);
+    const std::uint64_t per_call =
+        engine_t::rhs_evals_to_start +
+        max_attempts * (engine_t::rhs_evals_per_attempt + odestep::dense_step<Method, S>::rhs_evals_to_complete);
+    const bool forward = !(t1 < t0);
+    T previous = t0;
+    bool failed = false;
+    for (int k = 0; k < 6 && !failed; ++k) {
+        const T t = in.flag() ? in.number<T>() : previous + in.number<T>();
+        S u{T(7), T(7)};
+        const unsigned before = f.evaluations;
+        const odestep::status s = sampler.advance_to(f, t, u);
+        ODESTEP_FUZZ_TRACE("advance_to %.17g: %s\n", static_cast<double>(t), odestep::to_string(s));
+        ODESTEP_FUZZ_CHECK(valid(s), "a status outside the enum");
+        ODESTEP_FUZZ_CHECK(f.evaluations - before <= per_call, "a call made more evaluations than its bound");
+        const bool in_order = std::isfinite(t) && std::isfinite(t0) && std::isfinite(t1) &&
+                              (forward ? (t >= previous && t <= t1) : (t <= previous && t >= t1));
+        if (!in_order && engine.settings_status() == odestep::status::ok && max_attempts > 0)
+            ODESTEP_FUZZ_CHECK(s == odestep::status::invalid_time && f.evaluations == before,
+                               "a time out of order or out of the span not refused");
+        if (s == odestep::status::ok) {
+            ODESTEP_FUZZ_CHECK(in_order, "an ok output at a time out of order");
+            ODESTEP_FUZZ_CHECK(finite(u) || (t == t0 && same_bits(u, y)), "an output state not finite");
+            previous = t;
+        } else {
+            ODESTEP_FUZZ_CHECK(u[0] == T(7) && u[1] == T(7), "a failed call wrote its output");
+            failed = s != odestep::status::invalid_time && s != odestep::status::substep_limit;
+        }
+    }
+}
+
 template <class Method, class T>
 struct free_run {};
+template <class Method, class T>
+struct solution_run {};
+template <class Method, class T>
+struct sampler_run {};
 
 using entries =
     list<odestep::adaptive_substeps<odestep::tables::bogacki_shampine32, sd, 16>,
@@ -210,11 +334,22 @@ using entries =
          odestep::sdirk3<sd>, odestep::rodas3<sd>, odestep::backward_euler<sf>,
          free_run<odestep::tables::dormand_prince54, double>, free_run<odestep::tables::cash_karp54, double>,
          free_run<odestep::tables::bogacki_shampine32, double>, free_run<odestep::tables::dop853, double>,
-         free_run<odestep::tables::dormand_prince54, float>>;
+         free_run<odestep::tables::dormand_prince54, float>, solution_run<odestep::tables::dormand_prince54, double>,
+         solution_run<odestep::tables::dop853, double>, solution_run<odestep::tables::cash_karp54, double>,
+         sampler_run<odestep::tables::dormand_prince54, double>, sampler_run<odestep::tables::dop853, double>,
+         sampler_run<odestep::tables::bogacki_shampine32, float>>;
 
 template <class Method, class T>
 void run_entry(reader& in, free_run<Method, T>*) {
     run_free<Method, T>(in);
+}
+template <class Method, class T>
+void run_entry(reader& in, solution_run<Method, T>*) {
+    run_solution<Method, T>(in);
+}
+template <class Method, class T>
+void run_entry(reader& in, sampler_run<Method, T>*) {
+    run_sampler<Method, T>(in);
 }
 template <class E>
 void run_entry(reader& in, E*) {

@@ -144,7 +144,7 @@ bool finite(const State& s) {
 
 /// One of the enum's values.
 inline bool valid(odestep::status s) {
-    return static_cast<unsigned>(s) <= static_cast<unsigned>(odestep::status::invalid_setting) &&
+    return static_cast<unsigned>(s) <= static_cast<unsigned>(odestep::status::storage_full) &&
            std::strcmp(odestep::to_string(s), "unknown") != 0;
 }
 

@@ -263,7 +263,8 @@ def main():
 # the cap on attempts.
 ADAPTIVE = ["bs32_substeps", "ck54_substeps", "dp54_substeps", "dp54_substeps_float", "backward_euler", "sdirk3",
             "rodas3", "backward_euler_float", "free_dp54", "free_ck54", "free_bs32", "free_dop853",
-            "free_dp54_float"]
+            "free_dp54_float", "solution_dp54", "solution_dop853", "solution_ck54", "sampler_dp54", "sampler_dop853",
+            "sampler_bs32_float"]
 
 
 def adaptive_tolerances(rtol=1e-6, atol=1e-6, number=num):
@@ -291,9 +292,30 @@ def adaptive_free(entry, t0, t1=None, times=None, attempts=100, y=(1, 0), f=None
     return out + b(attempts)
 
 
+def adaptive_solution(entry, t0, t1, attempts=100, y=(1, 0), number=num):
+    out = b(ADAPTIVE.index(entry)) + script(number=number)
+    out += adaptive_tolerances(number=number) + b(0) + b(0)  # default controller, no step size given
+    return out + number(y[0]) + number(y[1]) + number(t0) + b(1) + number(t1) + b(attempts)
+
+
+def adaptive_sampler(entry, t0, t1, times, attempts=60, y=(1, 0), number=num):
+    out = b(ADAPTIVE.index(entry)) + script(number=number)
+    out += adaptive_tolerances(number=number) + b(0)  # default controller
+    out += number(y[0]) + number(y[1]) + number(t0) + b(1) + number(t1) + b(attempts)
+    return out + b"".join(b(1) + number(t) for t in times)
+
+
 def adaptive_seeds():
     for entry in ADAPTIVE:
         number = numf if entry.endswith("float") else num
+        if entry.startswith("solution"):
+            write("fuzz_adaptive", "seed-" + entry, adaptive_solution(entry, 0, 10, number=number))
+            write("fuzz_adaptive", "seed-" + entry + "-full", adaptive_solution(entry, 0, 1000, number=number))
+            continue
+        if entry.startswith("sampler"):
+            write("fuzz_adaptive", "seed-" + entry,
+                  adaptive_sampler(entry, 0, 10, (0, 0.5, 0.5, 2.5, 1, 10), number=number))
+            continue
         if entry.startswith("free"):
             write("fuzz_adaptive", "seed-" + entry, adaptive_free(entry, 0, t1=10, number=number))
             write("fuzz_adaptive", "seed-" + entry + "-times",

@@ -639,3 +639,35 @@ TEST_CASE("adams: a copy of a stepper carries its history, so two copies continu
     REQUIRE(copy.step(exp_sin{}, y2, 0.6, 0.1) == odestep::status::ok);
     CHECK(same_bits(y, y2));
 }
+
+TEST_CASE(
+    "adams: a large state's history (a ring) gives each component the result of the same component stepped alone "
+    "(a small state's, shifted as a block), bit for bit") {
+    // 40 decoupled decays y_i' = -c_i y_i: component i of the large run meets exactly the arithmetic of a run of
+    // y' = -c_i y alone (the formula is component by component), so the two layouts of the history must
+    // agree bit for bit; the closed form exp(-c_i t) bounds the method's error on top. (40 components: past
+    // the size at which adams switches from the shifted history to the ring, (k - 2) N > 32, for every method
+    // that keeps more than one derivative; AB2 keeps one, which neither layout moves.)
+    constexpr std::size_t n = 40;
+    using big = std::array<double, n>;
+    using one = std::array<double, 1>;
+    for_each_type<adams_methods>([](auto method) {
+        using table = decltype(method);
+        odestep::adams<table, big> large;
+        big y{};
+        for (std::size_t i = 0; i < n; ++i) y[i] = 1.0;
+        const auto decay = [](double, const big& x, big& d) {
+            for (std::size_t i = 0; i < n; ++i) d[i] = -(0.1 + 0.05 * static_cast<double>(i)) * x[i];
+        };
+        REQUIRE(odestep::integrate_n_steps(large, decay, y, 0.0, 0.05, 40).status == odestep::status::ok);
+        for (std::size_t i = 0; i < n; ++i) {
+            const double c = 0.1 + 0.05 * static_cast<double>(i);
+            odestep::adams<table, one> small;
+            one z{1.0};
+            const auto decay1 = [c](double, const one& x, one& d) { d[0] = -c * x[0]; };
+            REQUIRE(odestep::integrate_n_steps(small, decay1, z, 0.0, 0.05, 40).status == odestep::status::ok);
+            CHECK(same_bits(std::array<double, 1>{y[i]}, z));
+            CHECK(std::fabs(y[i] - std::exp(-c * 2.0)) < 1e-3);  // AB2, the least accurate: about 3e-4
+        }
+    });
+}

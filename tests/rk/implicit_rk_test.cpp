@@ -13,6 +13,7 @@
 #include <cstring>
 #include <limits>
 
+#include "support/order_fit.hpp"
 #include "support/stiff_problems.hpp"
 
 namespace {
@@ -545,4 +546,30 @@ TEST_CASE("implicit_rk: the event loop locates a crossing of the backward Euler 
     }
     CHECK(fired_at == 3);  // Radau IIA is nearly exact: e^-t = 1/2 at t = 0.693, in the third tick
     CHECK(p[0] == doctest::Approx(std::exp(-2.0)).epsilon(1e-6));
+}
+
+TEST_CASE("implicit_rk: Radau IIA 5's estimating step gives RADAU5's estimate, of local order 4, and the plain step") {
+    using s3 = state3<double>;
+    using stepper = odestep::radau_iia5<s3>;
+    static_assert(stepper::error_estimate && stepper::embedded_order == 3);
+    static_assert(stepper::rhs_evals_per_error_step == stepper::rhs_evals_per_step);
+    static_assert(!odestep::sdirk3<s3>::error_estimate && !odestep::backward_euler<s3>::error_estimate);
+    // one step of exp(sin t) (support/problems.hpp) from t = 0.3 with h = 0.2 / 2^k: |err| ~ C h^4
+    const auto sys = odestep::with_jacobian(odestep_test::exp_sin{}, odestep_test::exp_sin_jacobian{});
+    std::array<double, 4> errs{};
+    std::array<double, 4> hs{};
+    for (std::size_t k = 0; k < 4; ++k) {
+        hs[k] = 0.2 / double(1u << k);
+        s3 y = odestep_test::exp_sin::exact(0.3);
+        s3 plain = y;
+        s3 err{};
+        REQUIRE(stepper{}.step(sys, y, 0.3, hs[k], err) == odestep::status::ok);
+        REQUIRE(stepper{}.step(sys, plain, 0.3, hs[k]) == odestep::status::ok);
+        CHECK(std::memcmp(&y, &plain, sizeof y) == 0);
+        errs[k] = std::sqrt(err[0] * err[0] + err[1] * err[1] + err[2] * err[2]);
+    }
+    const double slope = odestep_test::log_log_slope(hs, errs);
+    MESSAGE("Radau IIA 5 estimate: " << errs[0] << " ... " << errs[3] << ", slope " << slope);
+    CHECK(slope > 3.7);
+    CHECK(slope < 4.3);
 }

@@ -13,6 +13,7 @@
 #include <cstring>
 #include <limits>
 
+#include "support/order_fit.hpp"
 #include "support/stiff_problems.hpp"
 
 namespace {
@@ -181,6 +182,133 @@ TEST_CASE("rosenbrock: RODAS3 shows order 3, autonomous and not (df/dt by differ
     for (std::size_t i = 0; i < 4; ++i) e[i] = error_forced(20u << i);
     MESSAGE("forced: " << e[0] << " ... " << e[3]);
     CHECK(odestep_test::fitted_order(e) == doctest::Approx(3.0).epsilon(0.05));
+}
+
+TEST_CASE("rosenbrock: RODAS3's embedded solution has order 2 exactly, and its error weights are KPP's (0, 0, 0, 1)") {
+    auto embedded = odestep::tables::rodas3::table<real>;
+    embedded.b = embedded.b_embedded;
+    const auto r = conditions(embedded);
+    CHECK(r.residual[0] <= 8 * LDBL_EPSILON);
+    CHECK(r.residual[1] <= 8 * LDBL_EPSILON);
+    CHECK(std::max(r.residual[2], r.residual[3]) > 1e-2L);  // not order 3
+    // KPP's Rodas3: ros_E = (0, 0, 0, 1), ros_ELO = 3
+    constexpr auto co = odestep::detail::transform_rosenbrock(odestep::tables::rodas3::table<double>);
+    const double e[4] = {0, 0, 0, 1};
+    for (std::size_t i = 0; i < 4; ++i) CHECK(co.e[i] == doctest::Approx(e[i]).epsilon(1e-15));
+    CHECK(odestep::rodas3<state3<double>>::error_estimate);
+    CHECK(odestep::rodas3<state3<double>>::embedded_order == 2);
+}
+
+TEST_CASE("rosenbrock: RODAS3's estimate is a local error of order 3, and the step with it is the plain step") {
+    // one step of exp(sin t) (support/problems.hpp) from t = 0.3 with h = 0.1 / 2^k: |err| ~ C h^3
+    using s3 = state3<double>;
+    const auto sys = odestep::with_jacobian(odestep_test::exp_sin{}, odestep_test::exp_sin_jacobian{});
+    std::array<double, 4> errs{};
+    std::array<double, 4> hs{};
+    for (std::size_t k = 0; k < 4; ++k) {
+        hs[k] = 0.1 / double(1u << k);
+        s3 y = odestep_test::exp_sin::exact(0.3);
+        s3 plain = y;
+        s3 err{};
+        REQUIRE(odestep::rodas3<s3>{}.step(sys, y, 0.3, hs[k], err) == odestep::status::ok);
+        REQUIRE(odestep::rodas3<s3>{}.step(sys, plain, 0.3, hs[k]) == odestep::status::ok);
+        CHECK(same_bits(y, plain));
+        errs[k] = std::sqrt(err[0] * err[0] + err[1] * err[1] + err[2] * err[2]);
+    }
+    const double slope = odestep_test::log_log_slope(hs, errs);
+    MESSAGE("RODAS3 estimate: slope " << slope);
+    CHECK(slope > 2.8);
+    CHECK(slope < 3.2);
+}
+
+TEST_CASE("rosenbrock: at dt = 0.1 from Robertson's (1, 0, 0) the steps say ok, and the estimate says they are wrong") {
+    // The fixed-step form promises a finite state and the method's cost, not accuracy: RODAS3 at dt = 0.1 ends
+    // far from the solution (y1 ~ 1e57) with every status ok. The estimate is how a fixed-step caller sees it.
+    using s3 = state3<double>;
+    const auto sys = odestep::with_jacobian(odestep_test::robertson{}, odestep_test::robertson_jacobian{});
+    const auto tol = odestep::tolerances<s3>::uniform(1e-3, 1e-9);
+    s3 y{1, 0, 0};
+    double worst = 0;
+    for (int n = 0; n < 400; ++n) {
+        const s3 before = y;
+        s3 err{};
+        REQUIRE(odestep::rodas3<s3>{}.step(sys, y, 0.1 * n, 0.1, err) == odestep::status::ok);
+        worst = std::max(worst, odestep::scaled_error_norm(err, before, y, tol));
+    }
+    MESSAGE("largest scaled estimate " << worst << ", y1 at 40: " << y[0]);
+    CHECK(std::fabs(y[0] / odestep_test::robertson_at_40[0] - 1) > 1);  // wrong, as the issue found
+    CHECK(worst > 100);                                                 // and the estimate says so
+}
+
+TEST_CASE("rosenbrock: Rodas4 from Hairer & Wanner's transformed coefficients: order 4, embedded order 3, nodes") {
+    constexpr auto t = odestep::tables::rodas4::table<real>;
+    const auto r = conditions(t);
+    for (std::size_t i = 0; i < 8; ++i) {
+        INFO("condition " << i);
+        CHECK(r.residual[i] <= 1e-13L);  // the published coefficients have 16 digits
+    }
+    auto embedded = t;
+    embedded.b = t.b_embedded;
+    const auto re = conditions(embedded);
+    for (std::size_t i = 0; i < 4; ++i) CHECK(re.residual[i] <= 1e-13L);
+    real worst_fourth = 0;
+    for (std::size_t i = 4; i < 8; ++i) worst_fourth = std::max(worst_fourth, re.residual[i]);
+    CHECK(worst_fourth > 1e-4L);  // the embedded solution is of order 3 exactly
+    // rodas.f's nodes C2 = 0.386, C3 = 0.21, C4 = 0.63 (c5 = c6 = 1) and gamma_i (KPP's ros_Gamma)
+    const real alpha[6] = {0, 0.386L, 0.21L, 0.63L, 1, 1};
+    const real gamma[6] = {0.25L, -0.1043L, 0.1035L, -0.0362L, 0, 0};
+    for (std::size_t i = 0; i < 6; ++i) {
+        real a = 0;
+        real g = 0;
+        for (std::size_t j = 0; j < 6; ++j) {
+            a += t.alpha[i][j];
+            g += t.gamma[i][j];
+        }
+        CHECK(std::fabs(a - alpha[i]) < 1e-14L);
+        CHECK(std::fabs(g - gamma[i]) < 1e-14L);
+    }
+    // and the transformation back gives the published a, C, m and KPP's error weights E = (0, 0, 0, 0, 0, 1)
+    constexpr auto co = odestep::detail::transform_rosenbrock(t);
+    using rd = odestep::tables::rodas4;
+    for (std::size_t i = 0; i < 6; ++i) {
+        for (std::size_t j = 0; j < i; ++j) {
+            CHECK(std::fabs(co.a[i][j] - rd::a<real>[i][j]) < 1e-13L);
+            CHECK(std::fabs(co.gc[i][j] / t.gamma[0][0] - rd::c<real>[i][j]) < 1e-12L);
+        }
+        CHECK(std::fabs(co.e[i] - (i == 5 ? 1 : 0)) < 1e-13L);
+    }
+    // L-stable: R(z) = 1 + z b^T (I - z B)^-1 1 (B = alpha + Gamma) vanishes at infinity
+    auto stability = [&](cplx z) {
+        std::array<cplx, 6> x{};
+        for (std::size_t i = 0; i < 6; ++i) {
+            cplx sum = 1;
+            for (std::size_t j = 0; j < i; ++j) sum += z * (t.alpha[i][j] + t.gamma[i][j]) * x[j];
+            x[i] = sum / (cplx(1) - z * t.gamma[i][i]);
+        }
+        cplx acc = 0;
+        for (std::size_t i = 0; i < 6; ++i) acc += t.b[i] * x[i];
+        return cplx(1) + z * acc;
+    };
+    CHECK(std::abs(stability(cplx(-1e8L, 0))) < 1e-6L);
+    long double worst = 0;
+    for (long double y = 1e-3L; y <= 1e6L; y *= 1.3L) worst = std::max(worst, std::abs(stability(cplx(0, y))));
+    CHECK(worst <= 1 + 1e-12L);
+}
+
+TEST_CASE("rosenbrock: Rodas4 shows order 4 with fixed steps") {
+    auto error_exp_sin = [](std::size_t steps) {
+        state3<double> y{1, 1, 0};
+        const auto sys = odestep::with_jacobian(odestep_test::exp_sin{}, odestep_test::exp_sin_jacobian{});
+        REQUIRE(odestep::integrate_n_steps(odestep::rosenbrock<odestep::tables::rodas4, state3<double>>{}, sys, y, 0.0,
+                                           10.0 / double(steps), steps)
+                    .status == odestep::status::ok);
+        return std::fmax(std::fabs(y[0] - std::exp(std::sin(10.0))),
+                         std::fmax(std::fabs(y[1] - std::cos(10.0)), std::fabs(y[2] - std::sin(10.0))));
+    };
+    std::array<double, 4> e{};
+    for (std::size_t i = 0; i < 4; ++i) e[i] = error_exp_sin(50u << i);
+    MESSAGE("Rodas4: " << e[0] << " ... " << e[3] << ", order " << odestep_test::fitted_order(e));
+    CHECK(odestep_test::fitted_order(e) == doctest::Approx(4.0).epsilon(0.05));
 }
 
 TEST_CASE("rosenbrock: RODAS3 on Robertson reaches Hairer & Wanner's values at t = 40, in double and float") {

@@ -59,15 +59,17 @@ struct embedded_pair {
     static constexpr int estimate_order =
         E >= 2 ? tab.order : (tab.order < tab.embedded_order[0] ? tab.order : tab.embedded_order[0]) + 1;
 
-    /// k[0] = f(t, y) is given. Fills k[1 .. S-1], y_new = y + h sum b_i k_i and
-    /// err = h sum (b_i - bhat_i) k_i (err2 from the second estimate, if any). t_end is t + h as the caller
-    /// has it (the interval's end, exactly): the stage with c = 1 is evaluated there. Every sum is expanded at
-    /// compile time over the table's non-zero coefficients (a loop over the table at run time cost DOP853 2.3x
-    /// the instructions per step); the terms are added in stage order from 0, as the plain loops would.
+    /// k[0] = f(t, y) is given (finite). Fills k[1 .. S-1], y_new = y + h sum b_i k_i and
+    /// err = h sum (b_i - bhat_i) k_i (err2 from the second estimate, if any), and returns true; returns false
+    /// at the first stage where f gave NaN or Inf, with no further call of f (a user's f may trap on NaN or
+    /// index a table by y), leaving the outputs unspecified. t_end is t + h as the caller has it (the
+    /// interval's end, exactly): the stage with c = 1 is evaluated there. Every sum is expanded at compile
+    /// time over the table's non-zero coefficients (a loop over the table at run time cost DOP853 2.3x the
+    /// instructions per step); the terms are added in stage order from 0, as the plain loops would.
     template <class System>
-    static void step(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k, State& y_new, State& err,
-                     State& err2) {
-        stages(f, y, t, h, t_end, k, y_new, std::make_index_sequence<S>{});
+    [[nodiscard]] static bool step(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k, State& y_new,
+                                   State& err, State& err2) {
+        if (!stages(f, y, t, h, t_end, k, y_new, std::make_index_sequence<S>{})) return false;
         ODESTEP_STEP_UNROLL
         for (std::size_t n = 0; n < N; ++n) {
             if constexpr (!fsal) y_new[n] = y[n] + h * weighted<b_weights>(k, n, std::make_index_sequence<S>{});
@@ -78,6 +80,7 @@ struct embedded_pair {
                 err2[n] = T(0);
             }
         }
+        return true;
     }
 
     // Weight rows as types, so that each weight is a constant expression in `weighted`.
@@ -99,17 +102,20 @@ struct embedded_pair {
         if constexpr (W::value(J) != T(0)) acc += W::value(J) * k[J][n];
     }
 
+    // The stages in order, stopping at the first that is not finite (&& short-circuits).
     template <class System, std::size_t... I>
-    ODESTEP_INLINE static void stages(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k,
+    ODESTEP_INLINE static bool stages(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k,
                                       State& y_new, std::index_sequence<I...>) {
-        (stage<I>(f, y, t, h, t_end, k, y_new), ...);
+        return (stage<I>(f, y, t, h, t_end, k, y_new) && ...);
     }
-    // k_I = f(t + c_I h, y + h sum_{j<I} a_Ij k_j), for I >= 1 (k_0 is given). The FSAL stage's input is
-    // y_{n+1} itself, kept as the new state.
+    // k_I = f(t + c_I h, y + h sum_{j<I} a_Ij k_j), for I >= 1 (k_0 is given); false when it is not finite.
+    // The FSAL stage's input is y_{n+1} itself, kept as the new state.
     template <std::size_t I, class System>
-    ODESTEP_INLINE static void stage(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k,
+    ODESTEP_INLINE static bool stage(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k,
                                      State& y_new) {
-        if constexpr (I >= 1) {
+        if constexpr (I == 0) {
+            return true;
+        } else {
             State input;
             State& in = fsal && I + 1 == S ? y_new : input;
             ODESTEP_STEP_UNROLL
@@ -117,6 +123,7 @@ struct embedded_pair {
                 in[n] = y[n] + h * weighted<a_row<I>>(k, n, std::make_index_sequence<I>{});
             const T ti = tab.c[I] == T(1) ? t_end : t + tab.c[I] * h;
             detail::evaluate(f, ti, static_cast<const State&>(in), k[I]);
+            return detail::all_finite(k[I]);
         }
     }
 
@@ -225,8 +232,10 @@ public:
     /// Rejected attempts since construction.
     step_count rejected_steps() const noexcept { return rejected_; }
 
-    /// One attempted step from (t, y) toward t_end, never past it; the step lands exactly on t_end when
-    /// the step size would reach within 1% of it (no sliver is left). Accepted (`accepted` true): y and t
+    /// One attempted step from (t, y) toward t_end, never past it and never longer than
+    /// step_control::max_step; the step lands exactly on t_end when the step size would reach within 1% of
+    /// it (no sliver is left), or, where that step would be longer than max_step, covers half of the rest
+    /// (the next one lands). Accepted (`accepted` true): y and t
     /// advance (t = t_end exactly when it landed), and sink(t, y, h, k, y_new) saw the step first (its start,
     /// size, stages and end). Rejected: y and t unchanged, the step size shrunk. Failures leave y and t as
     /// they were: non_finite (f gave NaN or Inf, or the step overflowed), step_too_small (|h| fell to ten
@@ -251,8 +260,12 @@ public:
             if (!(mag > T(0))) return status::non_finite;  // f at the estimate's probe was not finite
         }
         if (control_.max_step > T(0) && mag > control_.max_step) mag = control_.max_step;
-        const bool last = mag + mag / T(100) >= rem;
-        const T h = last ? span : dir * mag;
+        // Within 1% of t_end the step lands on it (no sliver is left), unless that would stretch it past
+        // max_step: then the rest, at most 1.01 max_step, is split into two equal steps.
+        const bool near_end = mag + mag / T(100) >= rem;
+        const bool split = near_end && control_.max_step > T(0) && rem > control_.max_step;
+        const bool last = near_end && !split;
+        const T h = last ? span : split ? dir * (rem / T(2)) : dir * mag;
         // The controller's step below ten ULPs of t: the run cannot resolve it. A step to t_end is the
         // caller's own interval, however short (an event's location re-steps to within ULPs of it).
         if (!last && !(detail::abs_value(h) > T(10) * std::numeric_limits<T>::epsilon() * detail::abs_value(t)))
@@ -262,15 +275,17 @@ public:
         State y_new{};  // written by pair::step (for FSAL in its stage loop, which GCC cannot always see)
         State err;
         State err2;
-        pair::step(f, y, t, h, last ? t_end : t + h, k, y_new, err, err2);
-        if (!all_stages_finite(k) || !detail::all_finite(y_new, err, err2)) return status::non_finite;
+        // Every stage was checked as it came (k[0], kept, was checked when it was computed).
+        if (!pair::step(f, y, t, h, last ? t_end : t + h, k, y_new, err, err2) || !detail::all_finite(y_new, err, err2))
+            return status::non_finite;
         const T e = pair::norm(err, err2, y, y_new, tol_);
         const pi_gains<T> g = gains_for(control_, estimate_order);
         const T habs = detail::abs_value(h);
         if (e <= T(1)) {
             T next = habs * step_factor(control_, g, estimate_order, e, err_prev_, after_rejection_);
-            // A step shortened to land on t_end says nothing against the size planned: keep the larger.
-            if (last && mag > next) next = mag;
+            // A step shortened to land on t_end (or to split the rest) says nothing against the size planned:
+            // keep the larger.
+            if ((last || split) && mag > next) next = mag;
             // A factor that underflows the step to zero (a tiny min_factor or safety) keeps this step's size:
             // a zero would send the next attempt back to the first-step estimate, one evaluation over the
             // published bound.
@@ -333,11 +348,6 @@ private:
         detail::assign(y0_, y);
         detail::assign(k0_, k);
         k0_valid_ = true;
-    }
-    static bool all_stages_finite(const std::array<State, pair::S>& k) noexcept {
-        for (const State& ki : k)
-            if (!detail::all_finite(ki)) return false;
-        return true;
     }
 
     tolerances<State> tol_;

@@ -104,6 +104,37 @@ struct dop853_dense {
     }};
 };
 
+/// The completed interpolant of one step: its start t0, its size h (signed) and the coefficients r of
+/// DOPRI5's CONTD5 (5 states), DOP853's CONTD8 (8 states) or the cubic Hermite data y0, f0, y1, f1 (4 states);
+/// what odestep::dense_step computes and odestep::solution stores per step.
+template <class Method, class State>
+struct dense_piece {
+    using T = value_type_t<State>;
+    static constexpr bool dopri5 = std::is_same_v<Method, tables::dormand_prince54>;
+    static constexpr bool dop853 = std::is_same_v<Method, tables::dop853>;
+    static constexpr std::size_t N = state_traits<State>::size;
+
+    T t0 = T(0);
+    T h = T(0);
+    std::array<State, dopri5 ? 5 : dop853 ? 8 : 4> r{};
+
+    /// The interpolated state at t0 + theta h (exactly r[0], the step's start, at theta = 0).
+    void at_theta(T theta, State& out) const noexcept {
+        const T theta1 = T(1) - theta;
+        if constexpr (dopri5) {
+            for (std::size_t i = 0; i < N; ++i)
+                out[i] = r[0][i] + theta * (r[1][i] + theta1 * (r[2][i] + theta * (r[3][i] + theta1 * r[4][i])));
+        } else if constexpr (dop853) {
+            for (std::size_t i = 0; i < N; ++i) {
+                const T p = r[4][i] + theta * (r[5][i] + theta1 * (r[6][i] + theta * r[7][i]));
+                out[i] = r[0][i] + theta * (r[1][i] + theta1 * (r[2][i] + theta * (r[3][i] + theta1 * p)));
+            }
+        } else {
+            hermite_cubic(r[0], r[1], r[2], r[3], h, theta, out);
+        }
+    }
+};
+
 }  // namespace detail
 
 /// \brief The interpolant of one accepted step of odestep::adaptive_rk<Method, State>.
@@ -136,37 +167,40 @@ public:
     /// The most evaluations of f that complete() makes.
     static constexpr std::size_t rhs_evals_to_complete = dopri5 ? 0 : dop853 ? 4 : engine_type::fsal ? 0 : 1;
 
+    /// The completed interpolant (its step and coefficients), valid after complete() returned ok.
+    using piece_type = detail::dense_piece<Method, State>;
+
     /// The accept sink: the step from (t, y) of size h with stages k to y_new.
     template <class Stages>
     void operator()(T t, const State& y, T h, const Stages& k, const State& y_new) noexcept {
-        t0_ = t;
-        h_ = h;
+        piece_.t0 = t;
+        piece_.h = h;
         complete_ = false;
         if constexpr (dopri5) {
             constexpr auto d = detail::dopri5_dense<T>::d;
             for (std::size_t i = 0; i < N; ++i) {
                 const T ydiff = y_new[i] - y[i];
                 const T bspl = h * k[0][i] - ydiff;
-                r_[0][i] = y[i];
-                r_[1][i] = ydiff;
-                r_[2][i] = bspl;
-                r_[3][i] = ydiff - h * k[6][i] - bspl;
+                piece_.r[0][i] = y[i];
+                piece_.r[1][i] = ydiff;
+                piece_.r[2][i] = bspl;
+                piece_.r[3][i] = ydiff - h * k[6][i] - bspl;
                 T acc = T(0);
                 for (std::size_t j = 0; j < 7; ++j)
                     if (d[j] != T(0)) acc += d[j] * k[j][i];
-                r_[4][i] = h * acc;
+                piece_.r[4][i] = h * acc;
             }
             complete_ = true;
         } else if constexpr (dop853) {
-            detail::assign(r_[0], y);
-            detail::assign(r_[1], y_new);
+            detail::assign(piece_.r[0], y);
+            detail::assign(piece_.r[1], y_new);
             for (std::size_t j = 0; j < 12; ++j) detail::assign(k_[j], k[j]);
         } else {
-            detail::assign(r_[0], y);
-            detail::assign(r_[1], k[0]);
-            detail::assign(r_[2], y_new);
+            detail::assign(piece_.r[0], y);
+            detail::assign(piece_.r[1], k[0]);
+            detail::assign(piece_.r[2], y_new);
             if constexpr (engine_type::fsal) {
-                detail::assign(r_[3], k[k.size() - 1]);
+                detail::assign(piece_.r[3], k[k.size() - 1]);
                 complete_ = true;
             }
         }
@@ -182,7 +216,7 @@ public:
             using c = detail::dop853_dense<T>;
             std::array<State, 16> k;
             for (std::size_t j = 0; j < 12; ++j) detail::assign(k[j], k_[j]);
-            status s = engine.derivative(f, t0_ + h_, r_[1], k[12]);
+            status s = engine.derivative(f, piece_.t0 + piece_.h, piece_.r[1], k[12]);
             if (s != status::ok) return s;
             for (std::size_t e = 0; e < 3; ++e) {
                 State input;
@@ -190,62 +224,50 @@ public:
                     T acc = T(0);
                     for (std::size_t j = 0; j < 13 + e; ++j)
                         if (c::a[e][j] != T(0)) acc += c::a[e][j] * k[j][i];
-                    input[i] = r_[0][i] + h_ * acc;
+                    input[i] = piece_.r[0][i] + piece_.h * acc;
                 }
-                detail::evaluate(f, t0_ + c::c[e] * h_, static_cast<const State&>(input), k[13 + e]);
+                detail::evaluate(f, piece_.t0 + c::c[e] * piece_.h, static_cast<const State&>(input), k[13 + e]);
                 if (!detail::all_finite(k[13 + e])) return status::non_finite;
             }
             for (std::size_t i = 0; i < N; ++i) {
-                const T ydiff = r_[1][i] - r_[0][i];
-                const T bspl = h_ * k[0][i] - ydiff;
-                r_[1][i] = ydiff;
-                r_[2][i] = bspl;
-                r_[3][i] = ydiff - h_ * k[12][i] - bspl;
+                const T ydiff = piece_.r[1][i] - piece_.r[0][i];
+                const T bspl = piece_.h * k[0][i] - ydiff;
+                piece_.r[1][i] = ydiff;
+                piece_.r[2][i] = bspl;
+                piece_.r[3][i] = ydiff - piece_.h * k[12][i] - bspl;
                 for (std::size_t row = 0; row < 4; ++row) {
                     T acc = T(0);
                     for (std::size_t j = 0; j < 16; ++j)
                         if (c::d[row][j] != T(0)) acc += c::d[row][j] * k[j][i];
-                    r_[4 + row][i] = h_ * acc;
+                    piece_.r[4 + row][i] = piece_.h * acc;
                 }
             }
             complete_ = true;
             return status::ok;
         } else {
-            const status s = engine.derivative(f, t0_ + h_, r_[2], r_[3]);
+            const status s = engine.derivative(f, piece_.t0 + piece_.h, piece_.r[2], piece_.r[3]);
             complete_ = s == status::ok;
             return s;
         }
     }
 
     /// The step's start time.
-    T t_start() const noexcept { return t0_; }
+    T t_start() const noexcept { return piece_.t0; }
     /// The step's size (signed).
-    T step() const noexcept { return h_; }
+    T step() const noexcept { return piece_.h; }
 
     /// The interpolated state at t (meant for t inside the step; theta = (t - t_start) / h).
-    void at(T t, State& out) const noexcept { at_theta((t - t0_) / h_, out); }
+    void at(T t, State& out) const noexcept { at_theta((t - piece_.t0) / piece_.h, out); }
 
     /// The interpolated state at t_start + theta h.
-    void at_theta(T theta, State& out) const noexcept {
-        const T theta1 = T(1) - theta;
-        if constexpr (dopri5) {
-            for (std::size_t i = 0; i < N; ++i)
-                out[i] = r_[0][i] + theta * (r_[1][i] + theta1 * (r_[2][i] + theta * (r_[3][i] + theta1 * r_[4][i])));
-        } else if constexpr (dop853) {
-            for (std::size_t i = 0; i < N; ++i) {
-                const T p = r_[4][i] + theta * (r_[5][i] + theta1 * (r_[6][i] + theta * r_[7][i]));
-                out[i] = r_[0][i] + theta * (r_[1][i] + theta1 * (r_[2][i] + theta * (r_[3][i] + theta1 * p)));
-            }
-        } else {
-            hermite_cubic(r_[0], r_[1], r_[2], r_[3], h_, theta, out);
-        }
-    }
+    void at_theta(T theta, State& out) const noexcept { piece_.at_theta(theta, out); }
+
+    /// The step and its interpolant's coefficients (meaningful after complete() returned ok).
+    const piece_type& piece() const noexcept { return piece_; }
 
 private:
-    T t0_ = T(0);
-    T h_ = T(0);
+    piece_type piece_{};
     bool complete_ = false;
-    std::array<State, dopri5 ? 5 : dop853 ? 8 : 4> r_{};
     std::array<State, dop853 ? 12 : 0> k_{};  // DOP853: the step's stages, until complete()
 };
 

@@ -21,6 +21,14 @@ namespace odestep {
 inline constexpr step_count default_max_attempts = 100000;
 
 namespace detail {
+// A solution (adaptive/solution.hpp) is not an observer: recognised by its tag, it takes its own overload.
+template <class T, class = void>
+struct has_solution_tag : std::false_type {};
+template <class T>
+struct has_solution_tag<T, std::void_t<typename T::solution_tag>> : std::true_type {};
+template <class T>
+inline constexpr bool is_solution_v = has_solution_tag<std::remove_cv_t<std::remove_reference_t<T>>>::value;
+
 template <class T>
 constexpr status check_span(T t0, T t1) noexcept {
     if (!is_finite(t0) || !is_finite(t1) || !is_finite(t1 - t0)) return status::invalid_time;
@@ -40,7 +48,7 @@ constexpr status check_span(T t0, T t1) noexcept {
 /// non_finite (f gave NaN or Inf; that step was not taken), step_too_small, substep_limit (max_attempts
 /// reached before t1).
 template <class Method, class State, class System, class Observer,
-          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>>, int> = 0>
+          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>> && !detail::is_solution_v<Observer>, int> = 0>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(adaptive_rk<Method, State>& engine, System&& f,
                                                                        State& y, detail::time_t_of<State> t0,
                                                                        detail::time_t_of<State> t1, Observer&& observe,

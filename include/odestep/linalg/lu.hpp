@@ -84,18 +84,24 @@ constexpr status lu_factor(matrix<T, N>& a, pivots<N>& pivot) noexcept {
 /// by x. Forward substitution with L, then back substitution with U; N^2 multiply-adds and N divisions.
 template <class T, std::size_t N>
 constexpr void lu_solve(const matrix<T, N>& lu, const pivots<N>& pivot, std::array<T, N>& b) noexcept {
-    for (std::size_t k = 0; k < N; ++k) {
-        const std::size_t p = pivot[k];
-        if (p != k) {
-            const T swap = b[k];
-            b[k] = b[p];
-            b[p] = swap;
+    // N = 1 has no interchange and no L: skipped at compile time (GCC 12 at -O2 otherwise reports the swap's
+    // b[pivot[0]] as out of bounds once a caller is inlined, not knowing that pivot[0] is 0).
+    if constexpr (N > 1) {
+        for (std::size_t k = 0; k < N; ++k) {
+            const std::size_t p = pivot[k];
+            if (p != k) {
+                const T swap = b[k];
+                b[k] = b[p];
+                b[p] = swap;
+            }
         }
-    }
-    for (std::size_t i = 1; i < N; ++i) {
-        T sum = b[i];
-        for (std::size_t j = 0; j < i; ++j) sum -= lu[i][j] * b[j];
-        b[i] = sum;
+        for (std::size_t i = 1; i < N; ++i) {
+            T sum = b[i];
+            for (std::size_t j = 0; j < i; ++j) sum -= lu[i][j] * b[j];
+            b[i] = sum;
+        }
+    } else {
+        (void)pivot;
     }
     for (std::size_t i = N; i-- > 0;) {
         T sum = b[i];

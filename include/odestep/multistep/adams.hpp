@@ -30,7 +30,8 @@ struct is_explicit_rk<explicit_rk<Method, State, Check>> : std::true_type {};
 ///
 /// Each step evaluates f_n = f(t_n, y_n) at its start and combines it with the k-1 derivatives of the
 /// previous steps, which the stepper keeps (with the dt they were taken with and the time the next step
-/// must start at) in a fixed-size ring buffer inside the object: no heap. An Adams-Bashforth step then
+/// must start at) in a fixed-size array inside the object (newest first, shifted each step, for a small
+/// state; a ring for a large one): no heap. An Adams-Bashforth step then
 /// costs one evaluation of f, a PECE step two (the second E of PECE is the next step's f_n).
 ///
 /// Starting: while fewer than k-1 derivatives are known, `step` takes the step with the one-step `Starter`
@@ -155,7 +156,12 @@ public:
     std::size_t history_size() const noexcept { return count_; }
 
 private:
-    std::array<State, M> history_{};      // ring buffer; the next f_n goes to slot_, f_{n-j} is at slot_ - j mod M
+    // The history's layout. A small state's is newest first (history_[j] = f_{n-1-j}), shifted down as a block
+    // after each step, so that every read is at a place fixed at compile time. A large state's is a ring
+    // (the next f_n goes to slot_, f_{n-j} is at slot_ - j mod M), where the shift's (M - 1) N copies a step
+    // would cost more than the ring's index arithmetic and selects, a few instructions per entry.
+    static constexpr bool shifted = (M - 1) * N <= 32;
+    std::array<State, M> history_{};
     detail::continuation<State> next_{};  // where the next step must start (t + dt of the last), and its dt
     std::size_t count_ = 0;
     std::size_t slot_ = 0;
@@ -216,15 +222,26 @@ private:
         return past(j + 1 - W::from_history);
     }
 
-    // f_{n-back}, back = 1 .. M: the entry `back` slots before the next free one (slot_ < M).
+    // f_{n-back}, back = 1 .. M: shifted, entry back - 1; in the ring, the entry `back` slots before the next
+    // free one (slot_ < M).
     ODESTEP_INLINE const State& past(std::size_t back) const noexcept {
-        return history_[slot_ >= back ? slot_ - back : slot_ + M - back];
+        if constexpr (shifted) {
+            return history_[back - 1];
+        } else {
+            return history_[slot_ >= back ? slot_ - back : slot_ + M - back];
+        }
     }
 
-    // f_n into the ring, in the oldest entry's slot.
+    // f_n into the history: shifted, in front, the others one place down (the oldest dropped); in the ring,
+    // in the oldest entry's slot.
     ODESTEP_INLINE void record(const State& fn) noexcept {
-        detail::assign(history_[slot_], fn);
-        slot_ = slot_ + 1 == M ? 0 : slot_ + 1;
+        if constexpr (shifted) {
+            for (std::size_t j = M - 1; j > 0; --j) detail::assign(history_[j], history_[j - 1]);
+            detail::assign(history_[0], fn);
+        } else {
+            detail::assign(history_[slot_], fn);
+            slot_ = slot_ + 1 == M ? 0 : slot_ + 1;
+        }
     }
 
     // The user's f, called through detail::evaluate, recording f(t, y) the first time the starter asks for it.

@@ -135,6 +135,13 @@ public:
     /// Newton iteration at the cap. fixed_newton: every step makes exactly this many (with a difference
     /// Jacobian) or rhs_evals_with_jacobian (with the system's).
     static constexpr std::size_t rhs_evals_per_step = rhs_evals_with_jacobian + jacobian_rhs_evals;
+    /// Radau IIA 5 has an estimating step: step(f, y, t, dt, err) also returns RADAU5's local error estimate.
+    static constexpr bool error_estimate = std::is_same_v<Method, tables::radau_iia5>;
+    /// The order of the embedded solution the estimate compares with (its error behaves as h^4).
+    static constexpr int embedded_order = error_estimate ? 3 : 0;
+    /// The most evaluations of the estimating step: those of the plain step (f(t_n, y_n), which the estimate
+    /// needs, is already counted there for the difference Jacobian).
+    static constexpr std::size_t rhs_evals_per_error_step = error_estimate ? rhs_evals_per_step : 0;
     /// Evaluations of f one step with System costs at most.
     template <class System>
     static constexpr std::size_t rhs_evals_for =
@@ -181,6 +188,44 @@ public:
         }
         if (s != status::ok) return s;
         if (!detail::all_finite(next)) return status::non_finite;
+        detail::assign(y, next);
+        return status::ok;
+    }
+
+    /// Radau IIA 5 only: y <- y(t + dt) as step(f, y, t, dt) computes it, and err = the local error estimate of
+    /// Hairer & Wanner's RADAU5 (Solving ODE II, Sec. IV.8, (8.19)):
+    ///     err = (I - h gamma0 J)^-1 gamma0 (h f(t_n, y_n) + e_1 Z_1 + e_2 Z_2 + e_3 Z_3)
+    /// (tables::radau5_coefficients: gamma0 = 1 / gamma, e), with J the step's Jacobian: one more N x N
+    /// factorization and solve, and f(t_n, y_n) when the system carries its Jacobian. The estimate behaves as
+    /// h^4 where the solution is smooth and stays bounded on stiff components. It does not choose dt: a
+    /// fixed-step caller compares err with its tolerance (odestep::scaled_error_norm) and acts;
+    /// odestep::radau5_substeps does this itself. On any status but ok y and err are left as they were.
+    template <class System, bool E = error_estimate, std::enable_if_t<E, int> = 0>
+    [[nodiscard]] status step(System&& f, State& y, T t, T dt, State& err) const {
+        State f0;
+        detail::evaluate(f, t, y, f0);
+        if (!detail::all_finite(f0)) return status::non_finite;
+        jacobian_t<State> jac;
+        const status js = detail::jacobian_of(f, t, y, f0, jac);
+        if (js != status::ok) return js;
+        State next;
+        std::array<T, S * N> z;
+        const status s = solve_coupled(f, y, t, dt, jac, next, &z);
+        if (s != status::ok) return s;
+        if (!detail::all_finite(next)) return status::non_finite;
+        using co = tables::radau5_coefficients<T>;
+        const T g0 = T(1) / co::gamma;
+        linalg::matrix<T, N> m;
+        for (std::size_t r = 0; r < N; ++r)
+            for (std::size_t c = 0; c < N; ++c) m[r][c] = (r == c ? T(1) : T(0)) - dt * g0 * jac[r][c];
+        linalg::pivots<N> piv;
+        if (linalg::lu_factor(m, piv) != status::ok) return status::singular_matrix;
+        State e;
+        for (std::size_t n = 0; n < N; ++n)
+            e[n] = g0 * (dt * f0[n] + co::e[0] * z[n] + co::e[1] * z[N + n] + co::e[2] * z[2 * N + n]);
+        linalg::lu_solve(m, piv, e);
+        if (!detail::all_finite(e)) return status::non_finite;
+        detail::assign(err, e);
         detail::assign(y, next);
         return status::ok;
     }
@@ -280,7 +325,8 @@ private:
 
     // Fully implicit: all stages at once, Z in R^{SN}, with I - h (A (x) J).
     template <class System>
-    status solve_coupled(System& f, const State& y, T t, T dt, const jacobian_t<State>& jac, State& next) const {
+    status solve_coupled(System& f, const State& y, T t, T dt, const jacobian_t<State>& jac, State& next,
+                         std::array<T, S * N>* keep = nullptr) const {
         constexpr std::size_t M = S * N;
         linalg::matrix<T, M> m;
         for (std::size_t i = 0; i < S; ++i)
@@ -316,6 +362,7 @@ private:
             if (s != status::ok) return s;
         }
         if (!Newton::fixed && !done) return status::no_convergence;
+        if (keep != nullptr) *keep = z;
         for (std::size_t n = 0; n < N; ++n) {
             if constexpr (stiffly_accurate) {
                 next[n] = y[n] + z[(S - 1) * N + n];

@@ -28,6 +28,7 @@ struct rosenbrock_coefficients {
     std::array<std::array<T, S>, S> a{};    ///< alpha Gamma^-1, strictly lower triangular
     std::array<std::array<T, S>, S> gc{};   ///< gamma C, C = I / gamma - Gamma^-1 (strictly lower triangular)
     std::array<T, S> m{};                   ///< b^T Gamma^-1
+    std::array<T, S> e{};                   ///< (b - bhat)^T Gamma^-1: the error estimate's weights
     std::array<T, S> node{};                ///< alpha_i = sum_j alpha_ij
     std::array<T, S> time_weight{};         ///< gamma gamma_i, gamma_i = sum_{j<=i} gamma_ij
     std::array<bool, S> reuses_previous{};  ///< stage i's input (time and state) is stage i-1's
@@ -56,6 +57,7 @@ constexpr rosenbrock_coefficients<T, S> transform_rosenbrock(const rosenbrock_ta
             x.a[i][j] = j < i ? a : T(0);
             x.gc[i][j] = j < i ? -gamma * inv[i][j] : T(0);
             x.m[i] += tab.b[j] * inv[j][i];
+            x.e[i] += (tab.b[j] - tab.b_embedded[j]) * inv[j][i];
         }
         x.node[i] = node;
         x.time_weight[i] = gamma * gi;
@@ -135,6 +137,12 @@ public:
     static constexpr std::size_t jacobian_rhs_evals = N;
     /// Evaluations of f of every step with a difference Jacobian (the most, whatever the system).
     static constexpr std::size_t rhs_evals_per_step = rhs_evals_with_jacobian + jacobian_rhs_evals;
+    /// The table has an embedded solution: step(f, y, t, dt, err) also returns y_{n+1} - yhat_{n+1}.
+    static constexpr bool error_estimate = tab.embedded_order > 0;
+    /// The order of the embedded solution (0: none).
+    static constexpr int embedded_order = tab.embedded_order;
+    /// The estimating step costs what the plain step costs (the estimate reuses the stages).
+    static constexpr std::size_t rhs_evals_per_error_step = error_estimate ? rhs_evals_with_jacobian + N : 0;
     /// Evaluations of f of every step with System.
     template <class System>
     static constexpr std::size_t rhs_evals_for =
@@ -144,6 +152,22 @@ public:
     /// y <- y(t + dt). On any status but ok, y is left as it was.
     template <class System>
     [[nodiscard]] status step(System&& f, State& y, T t, T dt) const {
+        State unused;
+        return advance<false>(f, y, t, dt, unused);
+    }
+
+    /// y <- y(t + dt) and err = y_{n+1} - yhat_{n+1}, the difference from the embedded solution (a local error
+    /// estimate of order embedded_order + 1), from the same stages. Tables with an embedded solution only.
+    /// What it does not do: choose dt. A fixed-step caller who wants "ok" to mean "accurate" compares err with
+    /// its tolerance (odestep::scaled_error_norm) and acts; the error-controlled form does this itself.
+    template <class System, bool E = error_estimate, std::enable_if_t<E, int> = 0>
+    [[nodiscard]] status step(System&& f, State& y, T t, T dt, State& err) const {
+        return advance<true>(f, y, t, dt, err);
+    }
+
+private:
+    template <bool Estimate, class System>
+    status advance(System& f, State& y, T t, T dt, State& err) const {
         State f0;
         detail::evaluate(f, t, y, f0);
         if (!detail::all_finite(f0)) return status::non_finite;
@@ -186,6 +210,18 @@ public:
             next[n] = y[n] + sum;
         }
         if (!detail::all_finite(next)) return status::non_finite;
+        if constexpr (Estimate) {
+            State e;
+            for (std::size_t n = 0; n < N; ++n) {
+                T sum = T(0);
+                for (std::size_t j = 0; j < S; ++j) sum += co.e[j] * u[j][n];
+                e[n] = sum;
+            }
+            if (!detail::all_finite(e)) return status::non_finite;
+            detail::assign(err, e);
+        } else {
+            (void)err;
+        }
         detail::assign(y, next);
         return status::ok;
     }

@@ -138,6 +138,44 @@ struct radau_iia5 {
         {}};
 };
 
+/// \brief The constants of Hairer & Wanner's RADAU5 for tables::radau_iia5, typed in T: the eigen-decomposition
+/// of A^-1 that splits the 3N-dimensional Newton system into one real and one complex N x N system, the
+/// embedded error estimate and the collocation polynomial's nodes.
+///
+/// With A the Radau IIA 5 matrix, T^-1 A^-1 T = [[gamma, 0, 0], [0, alpha, -beta], [0, beta, alpha]]: gamma is
+/// the real eigenvalue of A^-1 and alpha +- i beta the complex pair. Closed forms (radau5.f, HW II Sec. IV.8):
+/// gamma = 30 / (6 + 81^(1/3) - 9^(1/3)), alpha + i beta = 1 / (a + i b) with a = (12 - 81^(1/3) + 9^(1/3)) / 60
+/// and b = (81^(1/3) + 9^(1/3)) sqrt(3) / 60, here to 40 digits (mpmath, 50 digits). T and T^-1 are radau5.f's
+/// (Hairer's normalization, 20 digits: the third row of T is (t31, 1, 0)). The error estimate (HW II
+/// (8.19)-(8.20)) is err = (I - h gamma0 J)^-1 gamma0 (h f(t_n, y_n) + e_1 Z_1 + e_2 Z_2 + e_3 Z_3), gamma0 =
+/// 1 / gamma, with e = (-(13 + 7 sqrt 6) / 3, (-13 + 7 sqrt 6) / 3, -1/3) (radau5.f's DD1..DD3): the unique e
+/// with 1 + e.c = 0, e.c^2 = 0, e.c^3 = 0, so that the bracket is O(h^4). tests/stiff/radau5_test.cpp checks
+/// every one of these against the table by an independent computation.
+template <class T>
+struct radau5_coefficients {
+    /// gamma, the real eigenvalue of A^-1.
+    static constexpr T gamma = T(3.637834252744495732208418513577775797946L);
+    /// alpha, the real part of the complex eigenvalues of A^-1.
+    static constexpr T alpha = T(2.681082873627752133895790743211112101027L);
+    /// beta, the imaginary part of the complex eigenvalues of A^-1.
+    static constexpr T beta = T(3.050430199247410569426377624787567904441L);
+    /// The transformation T (radau5.f: T11 .. T31, T32 = 1, T33 = 0).
+    static constexpr std::array<std::array<T, 3>, 3> t{{
+        {T(9.1232394870892942792e-02L), T(-0.14125529502095420843L), T(-3.0029194105147424492e-02L)},
+        {T(0.24171793270710701896L), T(0.20412935229379993199L), T(0.38294211275726193779L)},
+        {T(0.96604818261509293619L), T(1), T(0)},
+    }};
+    /// Its inverse (radau5.f: TI11 .. TI33).
+    static constexpr std::array<std::array<T, 3>, 3> t_inv{{
+        {T(4.3255798900631553510L), T(0.33919925181580986954L), T(0.54177053993587487119L)},
+        {T(-4.1787185915519047273L), T(-0.32768282076106238708L), T(0.47662355450055045196L)},
+        {T(-0.50287263494578687595L), T(2.5719269498556054292L), T(-0.59603920482822492497L)},
+    }};
+    /// The error estimate's weights on the stage increments (radau5.f: DD1, DD2, DD3), 40 digits.
+    static constexpr std::array<T, 3> e{T(-10.04880939982741556246032950764707991459L),
+                                        T(1.382142733160748895793662840980413247921L), T(-1) / T(3)};
+};
+
 /// The implicit trapezoid under the name numerical analysts of PDEs use.
 using crank_nicolson = trapezoid;
 

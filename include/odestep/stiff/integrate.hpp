@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: BSL-1.0
+// odestep: the free-running loops for the error-controlled stiff engine: integrate_adaptive (every accepted
+// step observed) and integrate_times (the state at the caller's times, from the collocation polynomial), the
+// same names and contracts as the explicit pairs' loops (adaptive/integrate_adaptive.hpp).
+#ifndef ODESTEP_STIFF_INTEGRATE_HPP
+#define ODESTEP_STIFF_INTEGRATE_HPP
+
+#include <cstddef>
+#include <type_traits>
+
+#include "../adaptive/integrate_adaptive.hpp"
+#include "../detail/ops.hpp"
+#include "../integrate.hpp"
+#include "../state.hpp"
+#include "../status.hpp"
+#include "radau5.hpp"
+#include "rosenbrock_adaptive.hpp"
+
+namespace odestep {
+
+namespace detail {
+// The free-running loop of integrate_adaptive for a stiff engine (odestep::radau5, odestep::rosenbrock_adaptive).
+template <class Engine, class State, class System, class Observer>
+integrate_result<value_type_t<State>> stiff_adaptive_loop(Engine& engine, System& f, State& y, value_type_t<State> t0,
+                                                          value_type_t<State> t1, Observer& observe,
+                                                          step_count max_attempts) {
+    using T = value_type_t<State>;
+    status s = engine.settings_status();
+    if (s == status::ok && max_attempts == 0) s = status::invalid_setting;
+    if (s == status::ok) s = detail::check_span(t0, t1);
+    if (s != status::ok) return {s, t0, 0};
+    observe(t0, static_cast<const State&>(y));
+    T t = t0;
+    step_count accepted = 0;
+    for (step_count n = 0; n < max_attempts && t != t1; ++n) {
+        bool ok = false;
+        s = engine.attempt(f, t, y, t1, ok);
+        if (s != status::ok) return {s, t, accepted};
+        if (ok) {
+            ++accepted;
+            observe(t, static_cast<const State&>(y));
+        }
+    }
+    if (t != t1) return {status::substep_limit, t, accepted};
+    return {status::ok, t, accepted};
+}
+}  // namespace detail
+
+/// Integrates y' = f(t, y) from t0 to exactly t1 with the error-controlled Radau IIA 5 steps of `engine`
+/// (odestep::radau5: its tolerances, controller, and what it carries), and calls observe(t, y) with the
+/// initial state and after every accepted step. The result's `steps` counts the accepted steps.
+///
+/// Work is bounded: at most `max_attempts` attempts, hence at most 1 + radau5::rhs_evals_to_start +
+/// max_attempts * radau5::rhs_evals_per_attempt evaluations of f. Statuses, with y always the last accepted
+/// state at the returned t: invalid_tolerance / invalid_setting (settings, or max_attempts = 0) and
+/// invalid_time (t0 or t1 not finite), nothing evaluated or observed; non_finite, singular_matrix,
+/// step_too_small (see odestep::radau5); substep_limit (max_attempts reached before t1).
+template <class State, class System, class Observer,
+          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>>, int> = 0>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(radau5<State>& engine, System&& f, State& y,
+                                                                       detail::time_t_of<State> t0,
+                                                                       detail::time_t_of<State> t1, Observer&& observe,
+                                                                       step_count max_attempts = default_max_attempts) {
+    return detail::stiff_adaptive_loop(engine, f, y, t0, t1, observe, max_attempts);
+}
+
+/// integrate_adaptive with the Radau IIA 5 engine, without an observer.
+template <class State, class System>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(radau5<State>& engine, System&& f, State& y,
+                                                                       detail::time_t_of<State> t0,
+                                                                       detail::time_t_of<State> t1,
+                                                                       step_count max_attempts = default_max_attempts) {
+    detail::no_observer none;
+    return integrate_adaptive(engine, f, y, t0, t1, none, max_attempts);
+}
+
+/// integrate_adaptive with a Rosenbrock pair (odestep::rosenbrock_adaptive): the same contract as with the
+/// Radau IIA 5 engine, at most rhs_evals_to_start + max_attempts * rhs_evals_per_attempt evaluations of f.
+template <class Method, class State, class System, class Observer,
+          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>>, int> = 0>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(rosenbrock_adaptive<Method, State>& engine,
+                                                                       System&& f, State& y,
+                                                                       detail::time_t_of<State> t0,
+                                                                       detail::time_t_of<State> t1, Observer&& observe,
+                                                                       step_count max_attempts = default_max_attempts) {
+    return detail::stiff_adaptive_loop(engine, f, y, t0, t1, observe, max_attempts);
+}
+
+/// integrate_adaptive with a Rosenbrock pair, without an observer.
+template <class Method, class State, class System>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(rosenbrock_adaptive<Method, State>& engine,
+                                                                       System&& f, State& y,
+                                                                       detail::time_t_of<State> t0,
+                                                                       detail::time_t_of<State> t1,
+                                                                       step_count max_attempts = default_max_attempts) {
+    detail::no_observer none;
+    return integrate_adaptive(engine, f, y, t0, t1, none, max_attempts);
+}
+
+/// Integrates from t0 to the last of `times` (a container of T with size() and operator[], in the direction
+/// of the run and never going back) with the engine's free-running steps, and calls observe(times[i], u) with
+/// the state at every times[i]: from the step's collocation polynomial (odestep::radau5_dense, no extra
+/// evaluation of f) inside a step, the step's own state at its end. The output times do not shorten the
+/// steps. At the end y is the state at the last time; `steps` counts the accepted steps.
+///
+/// Work as integrate_adaptive. Statuses as integrate_adaptive (non_finite also when the polynomial overflows
+/// at an output time; y is then the state at the end of the step that holds it, at the returned t);
+/// invalid_time also when a time is not finite, lies before t0 or before the time before it (nothing
+/// evaluated or observed). With no times the call does nothing and returns ok.
+template <class State, class System, class Times, class Observer>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_times(radau5<State>& engine, System&& f, State& y,
+                                                                    detail::time_t_of<State> t0, const Times& times,
+                                                                    Observer&& observe,
+                                                                    step_count max_attempts = default_max_attempts) {
+    using T = value_type_t<State>;
+    const std::size_t count = times.size();
+    status s = engine.settings_status();
+    if (s == status::ok && max_attempts == 0) s = status::invalid_setting;
+    if (s == status::ok && !detail::is_finite(t0)) s = status::invalid_time;
+    if (s != status::ok || count == 0) return {s, t0, 0};
+    const T t1 = times[count - 1];
+    if (detail::check_span(t0, t1) != status::ok) return {status::invalid_time, t0, 0};
+    const bool forward = !(t1 < t0);
+    T previous = t0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const T ti = times[i];
+        if (!detail::is_finite(ti) || (forward ? ti < previous : ti > previous)) return {status::invalid_time, t0, 0};
+        previous = ti;
+    }
+    std::size_t next = 0;
+    while (next < count && times[next] == t0) observe(times[next++], static_cast<const State&>(y));
+    radau5_dense<State> dense;
+    State u;
+    T t = t0;
+    step_count accepted = 0;
+    for (step_count n = 0; n < max_attempts && next < count; ++n) {
+        bool ok = false;
+        s = engine.attempt(f, t, y, t1, ok, dense);
+        if (s != status::ok) return {s, t, accepted};
+        if (!ok) continue;
+        ++accepted;
+        const auto inside = [&](T ti) { return forward ? ti < t : ti > t; };
+        for (; next < count && inside(times[next]); ++next) {
+            dense.at(times[next], u);
+            if (!detail::all_finite(u)) return {status::non_finite, t, accepted};
+            observe(times[next], static_cast<const State&>(u));
+        }
+        while (next < count && times[next] == t) observe(times[next++], static_cast<const State&>(y));
+    }
+    if (next < count) return {status::substep_limit, t, accepted};
+    return {status::ok, t, accepted};
+}
+
+}  // namespace odestep
+
+#endif

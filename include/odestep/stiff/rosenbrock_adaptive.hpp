@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: BSL-1.0
+// odestep: error-controlled stepping with a Rosenbrock pair (a rosenbrock_tableau with an embedded solution:
+// Rodas4, RODAS3): the engine under odestep::rosenbrock_substeps and integrate_adaptive.
+#ifndef ODESTEP_STIFF_ROSENBROCK_ADAPTIVE_HPP
+#define ODESTEP_STIFF_ROSENBROCK_ADAPTIVE_HPP
+
+#include <cstddef>
+#include <limits>
+
+#include "../adaptive/adaptive_rk.hpp"
+#include "../adaptive/control.hpp"
+#include "../detail/ops.hpp"
+#include "../rk/rosenbrock.hpp"
+#include "../state.hpp"
+#include "../status.hpp"
+#include "../system.hpp"
+
+namespace odestep {
+
+/// \brief Error-controlled Rosenbrock stepping: each attempt is one step of odestep::rosenbrock<Method, State>
+/// with its embedded solution (Method a table with embedded weights: tables::rodas4, tables::rodas3), the
+/// estimate measured with the scaled RMS norm and the step size chosen by the PI controller of
+/// adaptive/control.hpp (step_factor, with k = embedded_order + 1).
+///
+/// No iteration: an attempt costs exactly what a step of the fixed-step stepper costs (one Jacobian, df/dt by
+/// a difference, one factorization, `stages` solves), rhs_evals_per_attempt evaluations at most. A step that
+/// fails (singular I - h gamma J, NaN or Inf from f or in the result) is retried with h halved, at most
+/// max_failures_in_a_row times in a row; then its status is returned. Every failure leaves y and t as they
+/// were. What it carries: the step size, the controller's memory; no heap, no static state.
+template <class Method, class State>
+class rosenbrock_adaptive {
+public:
+    using state_type = State;                        ///< the state, std::array<T, N>
+    using value_type = value_type_t<State>;          ///< its scalar T
+    using method_type = Method;                      ///< the table's tag
+    using stepper_type = rosenbrock<Method, State>;  ///< the step it attempts
+
+private:
+    using T = value_type;
+    static_assert(stepper_type::error_estimate,
+                  "odestep: error control needs a Rosenbrock table with an embedded solution (tables::rodas4, "
+                  "tables::rodas3)");
+
+public:
+    /// The order of the solution.
+    static constexpr int order = stepper_type::order;
+    /// Stages of one step.
+    static constexpr std::size_t stages = stepper_type::stages;
+    /// k in err ~ C h^k: the embedded order plus one.
+    static constexpr int estimate_order = stepper_type::embedded_order + 1;
+    /// No Newton iteration.
+    static constexpr std::size_t max_newton_iterations = 0;
+    /// Failed steps (singular matrix, NaN or Inf) tolerated in a row, each halving h, before the status is
+    /// returned.
+    static constexpr std::size_t max_failures_in_a_row = 5;
+    /// The most evaluations of f one attempt makes (a step with a difference Jacobian).
+    static constexpr std::size_t rhs_evals_per_attempt = stepper_type::rhs_evals_per_step;
+    /// The evaluations before the first attempt when no step size is carried: f(t, y) and the first-step
+    /// estimate's one.
+    static constexpr std::size_t rhs_evals_to_start = 2;
+
+    /// Tolerances 1e-6 (float: 1e-4), the default controller.
+    rosenbrock_adaptive() noexcept
+        : rosenbrock_adaptive(
+              tolerances<State>::uniform(detail::default_tolerance<T>(), detail::default_tolerance<T>())) {}
+    /// The given tolerances and controller settings (checked by settings_status() before any use).
+    explicit rosenbrock_adaptive(const tolerances<State>& tol, const step_control<T>& control = {}) noexcept
+        : tol_(tol), control_(control) {}
+
+    /// status::invalid_tolerance, status::invalid_setting, or ok.
+    status settings_status() const noexcept {
+        const status s = tol_.check();
+        return s != status::ok ? s : control_.check();
+    }
+    /// The tolerances.
+    const tolerances<State>& tolerance() const noexcept { return tol_; }
+    /// The controller's settings.
+    const step_control<T>& control() const noexcept { return control_; }
+    /// Replaces the tolerances (checked by the next call).
+    void set_tolerance(const tolerances<State>& tol) noexcept { tol_ = tol; }
+    /// Replaces the controller's settings (checked by the next call).
+    void set_control(const step_control<T>& control) noexcept { control_ = control; }
+    /// |h| of the next attempt; 0 before the first (then odestep::initial_step chooses it).
+    T step_size() const noexcept { return h_; }
+    /// Sets |h| of the next attempt (0: estimate it); a negative or non-finite value is ignored.
+    void set_step_size(T h) noexcept {
+        if (detail::is_finite(h) && h >= T(0)) h_ = h;
+    }
+    /// Forgets the step size and the controller's memory.
+    void restart() noexcept {
+        h_ = T(0);
+        err_prev_ = T(1) / T(10000);
+        after_rejection_ = false;
+        failures_ = 0;
+    }
+    /// Accepted steps since construction.
+    step_count accepted_steps() const noexcept { return accepted_; }
+    /// Rejected attempts since construction.
+    step_count rejected_steps() const noexcept { return rejected_; }
+
+    /// One attempted step from (t, y) toward t_end, never past it, landing exactly on t_end when the step
+    /// reaches it (or within 1% of it, if that stays within max_step). Accepted: y and t advance. Rejected:
+    /// y and t unchanged, the step size shrunk. Failures leave y and t as they were. Settings are the caller's
+    /// to check first. The sink is accepted for the loops' sake and not called (no dense output).
+    template <class System, class Sink = detail::no_step_sink>
+    status attempt(System& f, T& t, State& y, T t_end, bool& accepted, Sink&& = Sink{}) {
+        accepted = false;
+        const T span = t_end - t;
+        if (span == T(0)) {
+            accepted = true;
+            return status::ok;
+        }
+        const T dir = span > T(0) ? T(1) : T(-1);
+        const T rem = detail::abs_value(span);
+        T mag = h_;
+        if (!(mag > T(0))) {
+            State f0;
+            detail::evaluate(f, t, y, f0);
+            if (!detail::all_finite(f0)) return status::non_finite;
+            T limit = rem;
+            if (control_.max_step > T(0) && control_.max_step < limit) limit = control_.max_step;
+            mag = detail::abs_value(initial_step(f, t, y, f0, estimate_order - 1, tol_, limit, dir));
+            if (!(mag > T(0))) return status::non_finite;
+        }
+        if (control_.max_step > T(0) && mag > control_.max_step) mag = control_.max_step;
+        const bool stretch_ok = !(control_.max_step > T(0)) || rem <= control_.max_step;
+        const bool last = mag >= rem || (mag + mag / T(100) >= rem && stretch_ok);
+        const T h = last ? span : dir * mag;
+        if (!last && !(detail::abs_value(h) > T(10) * std::numeric_limits<T>::epsilon() * detail::abs_value(t)))
+            return status::step_too_small;
+        State y_new = y;
+        State err{};
+        const status s = stepper_type{}.step(f, y_new, t, h, err);
+        const T habs = detail::abs_value(h);
+        if (s != status::ok) {
+            ++rejected_;
+            after_rejection_ = true;
+            h_ = habs / T(2);
+            if (++failures_ >= max_failures_in_a_row) {
+                failures_ = 0;
+                return s;
+            }
+            return h_ > T(0) ? status::ok : status::step_too_small;
+        }
+        T e = scaled_error_norm(err, y, y_new, tol_);
+        if (!(e <= std::numeric_limits<T>::max())) e = std::numeric_limits<T>::max();
+        const pi_gains<T> g = gains_for(control_, estimate_order);
+        if (e <= T(1)) {
+            T next = habs * step_factor(control_, g, estimate_order, e, err_prev_, after_rejection_);
+            if (last && !(next < habs) && mag > next) next = mag;
+            h_ = next > T(0) ? next : habs;
+            err_prev_ = detail::max_value(e, T(1) / T(10000));
+            after_rejection_ = false;
+            failures_ = 0;
+            detail::assign(y, y_new);
+            t = last ? t_end : t + h;
+            accepted = true;
+            ++accepted_;
+        } else {
+            h_ = habs * step_factor(control_, g, estimate_order, e, err_prev_, after_rejection_);
+            after_rejection_ = true;
+            ++rejected_;
+            if (!(h_ > T(0))) return status::step_too_small;
+        }
+        return status::ok;
+    }
+
+private:
+    tolerances<State> tol_;
+    step_control<T> control_;
+    T h_ = T(0);
+    T err_prev_ = T(1) / T(10000);
+    bool after_rejection_ = false;
+    std::size_t failures_ = 0;
+    step_count accepted_ = 0;
+    step_count rejected_ = 0;
+};
+
+}  // namespace odestep
+
+#endif

@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: BSL-1.0
+// odestep: the course's form for stiff problems: an error-controlled engine (Radau 5(4), a Rosenbrock pair)
+// behind the fixed-step stepper interface, one grid interval per call.
+#ifndef ODESTEP_STIFF_SUBSTEPS_HPP
+#define ODESTEP_STIFF_SUBSTEPS_HPP
+
+#include <cstddef>
+
+#include "../adaptive/control.hpp"
+#include "../detail/ops.hpp"
+#include "../state.hpp"
+#include "../status.hpp"
+#include "../stepper.hpp"
+#include "../tables/rosenbrock.hpp"
+#include "radau5.hpp"
+#include "rosenbrock_adaptive.hpp"
+
+namespace odestep {
+
+/// \brief The course's form for stiff problems: an error-controlled stiff engine as a stepper that looks like a
+/// fixed-step one. `odestep::radau5_substeps<State>` (Radau 5(4), the first choice) and
+/// `odestep::rodas4_substeps<State>` (a Rosenbrock pair) are its named forms.
+///
+/// `step(f, y, t, dt)` covers one interval of the caller's grid, [t, t + dt], with as many error-controlled
+/// steps of `Engine` (odestep::radau5, odestep::rosenbrock_adaptive) as the tolerances ask for, the last
+/// landing exactly on t + dt. What the engine carries (the step size; for Radau also the Jacobian, its
+/// factorizations and the collocation polynomial) goes from one interval to the next (a step shortened to
+/// land on the grid does not shrink the step size). It publishes the stepper trait set, so integrate,
+/// integrate_n_steps and the event loops drive it as any stepper.
+///
+/// At most `max_attempts()` attempts (accepted or rejected) per interval, settable up to the compile-time
+/// MaxAttempts; past it `status::substep_limit` with y back at the interval's start. Every other failure
+/// (see the engine) also leaves y as it was given. ok means every internal step passed the error test.
+/// `rhs_evals_per_step` is the worst case of one interval (MaxAttempts attempts): a constant bound, not the
+/// typical cost.
+///
+///     odestep::radau5_substeps<state> s(odestep::tolerances<state>::uniform(1e-6, 1e-10));
+///     auto r = odestep::integrate(s, odestep::with_jacobian(f, J), y, 0.0, 40.0, 0.1);
+template <class Engine, std::size_t MaxAttempts = 1000>
+class stiff_substeps : public stepper_defaults<typename Engine::state_type> {
+    static_assert(MaxAttempts >= 1, "odestep: stiff_substeps needs room for at least one attempt");
+    using State = typename Engine::state_type;
+
+public:
+    using state_type = State;                ///< the state, std::array<T, N>
+    using value_type = value_type_t<State>;  ///< its scalar T
+    using engine_type = Engine;              ///< the error-controlled engine inside
+
+private:
+    using T = value_type;
+
+public:
+    /// The order of the internal steps (over an interval the error is the tolerance's, not dt^order).
+    static constexpr int order = engine_type::order;
+    /// Stages of one internal step.
+    static constexpr std::size_t stages = engine_type::stages;
+    /// Solves equations in every step.
+    static constexpr bool implicit = true;
+    /// The most evaluations of f one interval can cost: f at its start and the first-step estimate, and
+    /// MaxAttempts attempts at their worst.
+    static constexpr std::size_t rhs_evals_per_step =
+        1 + engine_type::rhs_evals_to_start + MaxAttempts * engine_type::rhs_evals_per_attempt;
+    /// The compile-time cap on attempts per interval (the bound of rhs_evals_per_step).
+    static constexpr std::size_t max_attempts_bound = MaxAttempts;
+    /// The most Newton iterations one interval can make (0 for a Rosenbrock engine).
+    static constexpr std::size_t newton_iterations_per_step = MaxAttempts * engine_type::max_newton_iterations;
+
+    /// Tolerances 1e-6 (float: 1e-4), the engine's default controller, MaxAttempts attempts per interval.
+    stiff_substeps() noexcept = default;
+    /// The given tolerances and cap, the engine's default controller (all checked before any use).
+    explicit stiff_substeps(const tolerances<State>& tol, std::size_t max_attempts = MaxAttempts) noexcept
+        : engine_(tol), max_attempts_(max_attempts) {}
+    /// The given tolerances, controller settings and cap (all checked before any use).
+    stiff_substeps(const tolerances<State>& tol, const step_control<T>& control,
+                   std::size_t max_attempts = MaxAttempts) noexcept
+        : engine_(tol, control), max_attempts_(max_attempts) {}
+
+    /// invalid_tolerance, invalid_setting (a controller setting, or a cap outside [1, MaxAttempts]), or ok.
+    status settings_status() const noexcept {
+        const status s = engine_.settings_status();
+        if (s != status::ok) return s;
+        return max_attempts_ >= 1 && max_attempts_ <= MaxAttempts ? status::ok : status::invalid_setting;
+    }
+    /// The cap on attempts per interval.
+    std::size_t max_attempts() const noexcept { return max_attempts_; }
+    /// Sets the cap on attempts per interval: status::invalid_setting (nothing changed) outside
+    /// [1, MaxAttempts].
+    status set_max_attempts(std::size_t n) noexcept {
+        if (n < 1 || n > MaxAttempts) return status::invalid_setting;
+        max_attempts_ = n;
+        return status::ok;
+    }
+    /// The engine: tolerances, controller, step size, counts.
+    engine_type& engine() noexcept { return engine_; }
+    /// The engine, read only.
+    const engine_type& engine() const noexcept { return engine_; }
+
+    /// y <- y(t + dt) to the tolerances. On any status but ok y is the state it was given:
+    /// invalid_tolerance / invalid_setting, invalid_time (t or t + dt not finite), invalid_step (dt zero or
+    /// not finite), non_finite, singular_matrix, step_too_small, substep_limit (the attempt cap).
+    template <class System>
+    [[nodiscard]] status step(System&& f, State& y, T t, T dt) {
+        status s = settings_status();
+        if (s != status::ok) return s;
+        if (!detail::is_finite(t)) return status::invalid_time;
+        if (!detail::is_finite(dt) || dt == T(0)) return status::invalid_step;
+        const T t_end = t + dt;
+        if (!detail::is_finite(t_end)) return status::invalid_time;
+        if (t_end == t) return detail::all_finite(y) ? status::ok : status::non_finite;
+        const State start = y;
+        T tc = t;
+        for (std::size_t n = 0; n < max_attempts_; ++n) {
+            bool accepted = false;
+            s = engine_.attempt(f, tc, y, t_end, accepted);
+            if (s != status::ok) break;
+            if (accepted && tc == t_end) return status::ok;
+        }
+        if (s == status::ok) s = status::substep_limit;
+        detail::assign(y, start);
+        return s;
+    }
+
+private:
+    engine_type engine_{};
+    std::size_t max_attempts_ = MaxAttempts;
+};
+
+/// Radau 5(4) (odestep::radau5) one grid interval per step: the first choice for stiff problems.
+template <class State, std::size_t MaxAttempts = 1000>
+using radau5_substeps = stiff_substeps<radau5<State>, MaxAttempts>;
+/// Rodas4 with its embedded order 3 solution (odestep::rosenbrock_adaptive) one grid interval per step.
+template <class State, std::size_t MaxAttempts = 1000>
+using rodas4_substeps = stiff_substeps<rosenbrock_adaptive<tables::rodas4, State>, MaxAttempts>;
+/// RODAS3 with its embedded order 2 solution, one grid interval per step.
+template <class State, std::size_t MaxAttempts = 1000>
+using rodas3_substeps = stiff_substeps<rosenbrock_adaptive<tables::rodas3, State>, MaxAttempts>;
+
+}  // namespace odestep
+
+#endif

@@ -1,0 +1,170 @@
+// SPDX-License-Identifier: BSL-1.0
+// The C API's single steps (src/capi_impl.hpp) compiled here with ODESTEP_C_EXACT_STATES 2, so that both of
+// their forms run: n = 1 and 2 exact (the stepper of std::array<double, n>), n = 3 .. ODESTEP_C_MAX_STATES
+// padded. Expected values: the C++ steppers called directly on std::array<double, n> (the padding changes no
+// operation on the first n components). Also the binding a step checks instead of the method and n: a new
+// n starts afresh, the bound one continues, a loop's history goes on in single steps, and every status of
+// the header on a bound stepper, with the caller's state untouched. (The library's own tests, tests/c/,
+// run the default build, where every n up to 8 is exact.)
+#define ODESTEP_C_EXACT_STATES 2
+#include "../../src/capi_impl.hpp"
+
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <limits>
+#include <utility>
+
+#include "support/compare.hpp"
+
+namespace {
+
+namespace capi = odestep::capi;
+
+struct rk4_family {
+    template <class S>
+    using type = odestep::rk4<S>;
+};
+struct ab4_family {
+    template <class S>
+    using type = odestep::adams_bashforth4<S>;
+};
+struct verlet_family {
+    template <class S>
+    using type = odestep::velocity_verlet<S>;
+};
+const odestep_method_d rk4_method{capi::make_ops<double, rk4_family>("rk4")};
+const odestep_method_d ab4_method{capi::make_ops<double, ab4_family>("ab4")};
+const odestep_method_d verlet_method{capi::make_ops<double, verlet_family>("velocity_verlet")};
+
+constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
+constexpr double infinite = std::numeric_limits<double>::infinity();
+
+// y_i' = -(i + 1) y_i / 4 + sin t, written for the C API (n components) and for the C++ steppers.
+void decay_c(double t, const double* y, double* d, void* ctx) {
+    const std::size_t n = *static_cast<const std::size_t*>(ctx);
+    for (std::size_t i = 0; i < n; ++i) d[i] = -static_cast<double>(i + 1) / 4.0 * y[i] + std::sin(t);
+}
+template <std::size_t N>
+void decay_cpp(double t, const std::array<double, N>& y, std::array<double, N>& d) {
+    for (std::size_t i = 0; i < N; ++i) d[i] = -static_cast<double>(i + 1) / 4.0 * y[i] + std::sin(t);
+}
+
+template <std::size_t N>
+void compare_rk4() {
+    std::size_t n = N;
+    const odestep_system_d sys{decay_c, &n, N};
+    odestep_stepper_d s;
+    REQUIRE(capi::init<double>(&s, &rk4_method) == ODESTEP_OK);
+    std::array<double, N> y{};
+    for (std::size_t i = 0; i < N; ++i) y[i] = 1.0 + 0.5 * static_cast<double>(i);
+    std::array<double, N> expected = y;
+    for (int k = 0; k < 10; ++k) {
+        const double t = 0.1 * k;
+        REQUIRE(capi::step<double>(&s, &sys, y.data(), t, 0.1, nullptr, nullptr) == ODESTEP_OK);
+        REQUIRE(odestep::rk4<std::array<double, N>>{}.step(decay_cpp<N>, expected, t, 0.1) == odestep::status::ok);
+    }
+    CHECK(odestep_test::same_bits(y, expected));
+}
+template <std::size_t... I>
+void compare_rk4_sizes(std::index_sequence<I...>) {
+    (compare_rk4<I + 1>(), ...);
+}
+
+}  // namespace
+
+TEST_CASE("C API single steps: every n, exact or padded, gives the C++ step on std::array<double, n> bit for bit") {
+    static_assert(capi::max_states >= 3, "the test needs a padded size");
+    compare_rk4_sizes(std::make_index_sequence<capi::max_states>{});
+}
+
+TEST_CASE("C API single steps: Adams continues its bound n, starts afresh on another, and continues a loop") {
+    std::size_t n2 = 2, n3 = 3;
+    const odestep_system_d sys2{decay_c, &n2, 2};
+    const odestep_system_d sys3{decay_c, &n3, 3};
+    odestep_stepper_d s;
+    REQUIRE(capi::init<double>(&s, &ab4_method) == ODESTEP_OK);
+    std::array<double, 2> y{1.0, 2.0};
+    for (int k = 0; k < 5; ++k) REQUIRE(capi::step<double>(&s, &sys2, y.data(), 0.1 * k, 0.1, nullptr, nullptr) == 0);
+    const std::array<double, 2> kept = y;
+    CHECK(capi::step<double>(&s, &sys2, y.data(), 0.0, 0.1, nullptr, nullptr) == ODESTEP_STEP_MISMATCH);
+    CHECK(odestep_test::same_bits(y, kept));
+    // Another n: a new object of its size, an empty history, so any t is accepted.
+    std::array<double, 3> z{1.0, 2.0, 3.0};
+    CHECK(capi::step<double>(&s, &sys3, z.data(), 7.0, 0.25, nullptr, nullptr) == ODESTEP_OK);
+    // Back to n = 2: afresh again (the history of n = 2 is gone), so the old grid's time is not required.
+    CHECK(capi::step<double>(&s, &sys2, y.data(), 3.0, 0.5, nullptr, nullptr) == ODESTEP_OK);
+
+    // A loop (padded object), then single steps of its n: its history goes on (the C++ stepper's result),
+    // and a step off its grid is refused. n = 2 and n = 3 (exact and padded single-step sizes alike).
+    for (const odestep_system_d* sys : {&sys2, &sys3}) {
+        std::array<double, 3> c{1.0, 2.0, 3.0};
+        std::array<double, 3> cpp = c;
+        REQUIRE(capi::integrate<double>(&s, sys, c.data(), 0.0, 1.0, 0.125, nullptr, nullptr, nullptr) == ODESTEP_OK);
+        CHECK(capi::step<double>(&s, sys, c.data(), 0.5, 0.125, nullptr, nullptr) == ODESTEP_STEP_MISMATCH);
+        REQUIRE(capi::step<double>(&s, sys, c.data(), 1.0, 0.125, nullptr, nullptr) == ODESTEP_OK);
+        odestep::adams_bashforth4<std::array<double, 3>> ab4;
+        std::size_t n = sys->n;
+        const auto f = [&n](double t, const std::array<double, 3>& y3, std::array<double, 3>& d) {
+            decay_c(t, y3.data(), d.data(), &n);
+            for (std::size_t i = n; i < 3; ++i) d[i] = 0.0;
+        };
+        if (n == 2) cpp[2] = 0.0;
+        REQUIRE(odestep::integrate_n_steps(ab4, f, cpp, 0.0, 0.125, 9).status == odestep::status::ok);
+        for (std::size_t i = 0; i < n; ++i) CHECK(c[i] == cpp[i]);
+    }
+}
+
+TEST_CASE("C API single steps: a bound stepper still refuses every bad argument and touches nothing") {
+    std::size_t n2 = 2;
+    odestep_system_d sys{decay_c, &n2, 2};
+    odestep_stepper_d s;
+    REQUIRE(capi::init<double>(&s, &rk4_method) == ODESTEP_OK);
+    std::array<double, 2> y{1.0, 2.0};
+    REQUIRE(capi::step<double>(&s, &sys, y.data(), 0.0, 0.1, nullptr, nullptr) == ODESTEP_OK);  // bound to n = 2
+    const std::array<double, 2> kept = y;
+    for (const double t : {not_a_number, infinite, -infinite})
+        CHECK(capi::step<double>(&s, &sys, y.data(), t, 0.1, nullptr, nullptr) == ODESTEP_INVALID_TIME);
+    for (const double dt : {0.0, -0.0, not_a_number, infinite, -infinite})
+        CHECK(capi::step<double>(&s, &sys, y.data(), 0.1, dt, nullptr, nullptr) == ODESTEP_INVALID_STEP);
+    CHECK(capi::step<double>(&s, &sys, nullptr, 0.1, 0.1, nullptr, nullptr) == ODESTEP_INVALID_SETTING);
+    CHECK(capi::step<double>(nullptr, &sys, y.data(), 0.1, 0.1, nullptr, nullptr) == ODESTEP_INVALID_SETTING);
+    CHECK(capi::step<double>(&s, nullptr, y.data(), 0.1, 0.1, nullptr, nullptr) == ODESTEP_INVALID_SETTING);
+    for (const std::size_t bad_n : {std::size_t{0}, capi::max_states + 1, ~std::size_t{0}}) {
+        sys.n = bad_n;
+        CHECK(capi::step<double>(&s, &sys, y.data(), 0.1, 0.1, nullptr, nullptr) == ODESTEP_INVALID_SETTING);
+    }
+    sys.n = 2;
+    sys.f = nullptr;
+    CHECK(capi::step<double>(&s, &sys, y.data(), 0.1, 0.1, nullptr, nullptr) == ODESTEP_INVALID_SETTING);
+    sys.f = decay_c;
+    double e[2] = {0.0, 0.0};  // rk4 has no estimate
+    CHECK(capi::step<double>(&s, &sys, y.data(), 0.1, 0.1, e, nullptr) == ODESTEP_INVALID_SETTING);
+    CHECK(odestep_test::same_bits(y, kept));
+    // Bound to a first-order n, a Newtonian step of that n is refused (the kinds are bound apart).
+    const odestep_newton_d newton{decay_c, &n2, 2};
+    double v[2] = {0.0, 0.0};
+    CHECK(capi::step_newton<double>(&s, &newton, y.data(), v, nullptr, 0.1, 0.1) == ODESTEP_INVALID_SETTING);
+
+    // A zeroed stepper (never initialised: no method, nothing bound) refuses every n, 0 included.
+    odestep_stepper_d zeroed;
+    std::memset(&zeroed, 0, sizeof zeroed);
+    for (const std::size_t any_n : {std::size_t{0}, std::size_t{1}, std::size_t{2}}) {
+        sys.n = any_n;
+        CHECK(capi::step<double>(&zeroed, &sys, y.data(), 0.1, 0.1, nullptr, nullptr) == ODESTEP_INVALID_SETTING);
+        const odestep_newton_d nz{decay_c, &n2, any_n};
+        CHECK(capi::step_newton<double>(&zeroed, &nz, y.data(), v, nullptr, 0.1, 0.1) == ODESTEP_INVALID_SETTING);
+    }
+    CHECK(odestep_test::same_bits(y, kept));
+
+    // A Newtonian method bound to its n refuses a first-order step of that n.
+    odestep_stepper_d vv;
+    REQUIRE(capi::init<double>(&vv, &verlet_method) == ODESTEP_OK);
+    double x[2] = {1.0, 0.0};
+    REQUIRE(capi::step_newton<double>(&vv, &newton, x, v, nullptr, 0.0, 0.1) == ODESTEP_OK);
+    sys.n = 2;
+    CHECK(capi::step<double>(&vv, &sys, y.data(), 0.1, 0.1, nullptr, nullptr) == ODESTEP_INVALID_SETTING);
+}

@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: BSL-1.0
+// Host only: the error-controlled Rosenbrock pairs (odestep::rosenbrock_adaptive, rodas4_substeps) from the
+// natural initial conditions of the stiff test problems, against published or independently computed
+// references, and their failures.
+#include <doctest/doctest.h>
+#include <odestep/odestep.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "support/order_fit.hpp"
+#include "support/stiff_problems.hpp"
+
+namespace {
+
+using odestep_test::state2;
+using odestep_test::state3;
+using odestep_test::state8;
+using S3 = state3<double>;
+
+// Robertson at t = 40 from (1, 0, 0): SciPy 1.10.1 solve_ivp(method="Radau", rtol=1e-12, atol=1e-20, exact
+// Jacobian), as in tests/stiff/radau5_test.cpp.
+constexpr std::array<double, 3> robertson_40{0.7158270687194083, 9.185534764557791e-06, 0.28416374574583075};
+
+template <std::size_t N>
+double worst_relative(const std::array<double, N>& y, const std::array<double, N>& reference) {
+    double worst = 0;
+    for (std::size_t i = 0; i < N; ++i) worst = std::fmax(worst, std::fabs(y[i] / reference[i] - 1));
+    return worst;
+}
+
+static_assert(odestep::check_stepper<odestep::rodas4_substeps<S3>>());
+static_assert(odestep::rosenbrock_adaptive<odestep::tables::rodas4, S3>::estimate_order == 4);
+static_assert(odestep::rosenbrock_adaptive<odestep::tables::rodas3, S3>::estimate_order == 3);
+
+TEST_CASE("rodas4: Robertson from (1, 0, 0) to 40, free-running: error <= 10 rtol, slope near 1") {
+    const auto sys = odestep::with_jacobian(odestep_test::robertson{}, odestep_test::robertson_jacobian{});
+    const std::array<double, 3> rtols{1e-4, 1e-6, 1e-8};
+    std::array<double, 3> errors{};
+    for (std::size_t k = 0; k < 3; ++k) {
+        odestep::rosenbrock_adaptive<odestep::tables::rodas4, S3> engine(
+            odestep::tolerances<S3>::uniform(rtols[k], rtols[k] * 1e-6));
+        S3 y{1, 0, 0};
+        REQUIRE(odestep::integrate_adaptive(engine, sys, y, 0.0, 40.0).status == odestep::status::ok);
+        errors[k] = worst_relative(y, robertson_40);
+        MESSAGE("rtol " << rtols[k] << ": worst relative error " << errors[k] << ", accepted "
+                        << engine.accepted_steps() << ", rejected " << engine.rejected_steps());
+        CHECK(errors[k] <= 10 * rtols[k]);
+    }
+    const double slope = odestep_test::log_log_slope(rtols, errors);
+    MESSAGE("slope " << slope);
+    CHECK(slope >= 0.7);
+    CHECK(slope <= 1.3);
+}
+
+TEST_CASE("rodas4_substeps: Robertson from (1, 0, 0) on a 0.1 grid to 40, every interval ok") {
+    const auto sys = odestep::with_jacobian(odestep_test::robertson{}, odestep_test::robertson_jacobian{});
+    for (double rtol : {1e-4, 1e-6}) {
+        odestep::rodas4_substeps<S3> stepper(odestep::tolerances<S3>::uniform(rtol, rtol * 1e-6));
+        S3 y{1, 0, 0};
+        const auto r = odestep::integrate(stepper, sys, y, 0.0, 40.0, 0.1);
+        REQUIRE(r.status == odestep::status::ok);
+        CHECK(worst_relative(y, robertson_40) <= 10 * rtol);
+    }
+    // RODAS3 under the same engine: what the fixed-step RODAS3 got wrong at dt = 0.1 (y1 = 6e57) is right here
+    odestep::rodas3_substeps<S3> rodas3(odestep::tolerances<S3>::uniform(1e-4, 1e-10));
+    S3 y{1, 0, 0};
+    REQUIRE(odestep::integrate(rodas3, sys, y, 0.0, 40.0, 0.1).status == odestep::status::ok);
+    MESSAGE("RODAS3 pair at rtol 1e-4: worst relative error " << worst_relative(y, robertson_40));
+    CHECK(worst_relative(y, robertson_40) <= 1e-3);
+}
+
+TEST_CASE("rodas4_substeps: exp(sin t) on a 1.0 grid to 20: error <= 100 rtol over the grid") {
+    const auto sys = odestep::with_jacobian(odestep_test::exp_sin{}, odestep_test::exp_sin_jacobian{});
+    for (double rtol : {1e-4, 1e-6, 1e-8}) {
+        odestep::rodas4_substeps<S3> stepper(odestep::tolerances<S3>::uniform(rtol, rtol));
+        S3 y = odestep_test::exp_sin::start<double>();
+        double worst = 0;
+        const auto r = odestep::integrate(stepper, sys, y, 0.0, 20.0, 1.0, [&](double t, const S3& u) {
+            const S3 x = odestep_test::exp_sin::exact(t);
+            for (std::size_t i = 0; i < 3; ++i) worst = std::fmax(worst, std::fabs(u[i] - x[i]));
+        });
+        REQUIRE(r.status == odestep::status::ok);
+        MESSAGE("rtol " << rtol << ": largest error over the grid " << worst);
+        CHECK(worst <= 100 * rtol);
+    }
+}
+
+TEST_CASE("rodas4_substeps: Van der Pol mu = 1000, HIRES and OREGO from their initial states on 0.1 grids") {
+    using S2 = state2<double>;
+    odestep::rodas4_substeps<S2> vdp(odestep::tolerances<S2>::uniform(1e-6, 1e-6));
+    S2 y{2, 0};
+    double largest = 0;
+    REQUIRE(odestep::integrate(
+                vdp, odestep::with_jacobian(odestep_test::van_der_pol{}, odestep_test::van_der_pol_jacobian{}), y, 0.0,
+                2000.0, 0.1, [&](double, const S2& u) { largest = std::fmax(largest, std::fabs(u[0])); })
+                .status == odestep::status::ok);
+    CHECK(largest <= 2.1);
+    CHECK(worst_relative(y, odestep_test::van_der_pol_at_2000) <= 1e-3);
+    using S8 = state8<double>;
+    odestep::rodas4_substeps<S8> hires(odestep::tolerances<S8>::uniform(1e-7, 1e-7));
+    S8 h = odestep_test::hires_start;
+    REQUIRE(odestep::integrate(hires, odestep::with_jacobian(odestep_test::hires{}, odestep_test::hires_jacobian{}), h,
+                               0.0, 321.8122, 0.1)
+                .status == odestep::status::ok);
+    CHECK(worst_relative(h, odestep_test::hires_at_end) <= 1e-5);
+    odestep::rodas4_substeps<S3> orego(odestep::tolerances<S3>::uniform(1e-7, 1e-7));
+    S3 o{1, 2, 3};
+    REQUIRE(odestep::integrate(orego, odestep::with_jacobian(odestep_test::orego{}, odestep_test::orego_jacobian{}), o,
+                               0.0, 360.0, 0.1)
+                .status == odestep::status::ok);
+    CHECK(worst_relative(o, odestep_test::orego_at_360) <= 1e-4);
+}
+
+TEST_CASE("rodas4_substeps: NaN from f and the attempt cap leave y bit for bit") {
+    const auto jac = odestep_test::robertson_jacobian{};
+    auto f = [](double t, const S3& y, S3& d) {
+        odestep_test::robertson{}(t, y, d);
+        if (t > 1.05) d[1] = std::numeric_limits<double>::quiet_NaN();
+    };
+    odestep::rodas4_substeps<S3> stepper(odestep::tolerances<S3>::uniform(1e-6, 1e-12));
+    S3 y{1, 0, 0};
+    const auto r = odestep::integrate(stepper, odestep::with_jacobian(f, jac), y, 0.0, 2.0, 0.1);
+    CHECK(r.status == odestep::status::non_finite);
+    CHECK(r.t == doctest::Approx(1.0));
+    odestep::rodas4_substeps<S3> again(odestep::tolerances<S3>::uniform(1e-6, 1e-12));
+    S3 z{1, 0, 0};
+    REQUIRE(odestep::integrate(again, odestep::with_jacobian(f, jac), z, 0.0, 1.0, 0.1).status == odestep::status::ok);
+    CHECK(odestep::detail::same_values(y, z));
+    odestep::rodas4_substeps<S3, 3> capped(odestep::tolerances<S3>::uniform(1e-8, 1e-14));
+    S3 w{1, 0, 0};
+    const S3 before = w;
+    CHECK(capped.step(odestep::with_jacobian(odestep_test::robertson{}, jac), w, 0.0, 1.0) ==
+          odestep::status::substep_limit);
+    CHECK(odestep::detail::same_values(w, before));
+}
+
+}  // namespace
