@@ -117,7 +117,7 @@ public:
         if (!settings_valid(set)) return status::invalid_tolerance;
         values g{};
         if (!evaluate_all(set, t0, y, g)) return status::non_finite_event;
-        for (std::size_t i = 0; i < E; ++i) memory[i] = event_memory<T>{g[i], t0, t0, 0, false};
+        for (std::size_t i = 0; i < E; ++i) memory[i] = event_memory<T>{g[i], t0, t0, 0, false, true};
         rearm(set, t0, g);
         return status::ok;
     }
@@ -228,8 +228,12 @@ private:
         pack b_state;
         slopes d;  // (on the interpolant) the pass's slopes, computed when it first probes or locates
         // One pass per restart: the first, and one after each location whose action ran.
+        const bool forward = h > T(0);
+        const T step_h = h;  // (h becomes the rest of the step after an action)
         for (;;) {
             if constexpr (interpolates) d.ready = false;
+            // Crossings this close after an event's last firing (or the start) are the same crossing.
+            const T same_root = T(4) * std::numeric_limits<T>::epsilon() * (abs_value(t_s) + abs_value(h));
             if (partial) {
                 load(y, start);
                 s = call_step(stepper, f, y, t_s, h, seq{});
@@ -244,9 +248,6 @@ private:
                 if (partial) reset_if_any(stepper);
                 return outcome(status::ok, t_end, no_event);
             }
-            const bool forward = h > T(0);
-            // Crossings this close after an event's last firing (or the start) are the same crossing.
-            const T same_root = T(4) * std::numeric_limits<T>::epsilon() * (abs_value(t_s) + abs_value(h));
             // Scan (0, h] piece by piece (the pieces end at the probes and at h). lo is where the events'
             // memory was last updated; lo_state the state there.
             T lo = T(0);
@@ -332,9 +333,12 @@ private:
                     if (acted_here) {
                         // An action ran (it may have changed the state, or only a parameter the right-hand
                         // side reads): the rest of the step starts again from the event.
+                        // Each event is armed from what the state does next (see headings).
+                        values g_next = g_cross;
+                        headings(f, set, t_star, t_b, step_h, a_state, g_next);
                         store(y, a_state);
-                        for (std::size_t i = 0; i < E; ++i) memory[i].g = g_cross[i];
-                        rearm(set, t_star, g_cross);
+                        for (std::size_t i = 0; i < E; ++i) memory[i].g = g_next[i];
+                        rearm(set, t_star, g_next);
                         reset_if_any(stepper);  // a history or a kept acceleration belongs to the old state
                         t_s = t_star;
                         h = t_end - t_star;
@@ -424,12 +428,6 @@ private:
         refs r;
         for (std::size_t k = 0; k < K; ++k) r[k] = &p[k];
         return r;
-    }
-    static bool same(const pack& a, const pack& b) {
-        for (std::size_t k = 0; k < K; ++k)
-            for (std::size_t n = 0; n < a[k].size(); ++n)
-                if (!(a[k][n] == b[k][n])) return false;
-        return true;
     }
     static bool all_finite_pack(const pack& p) {
         for (std::size_t k = 0; k < K; ++k)
@@ -537,6 +535,46 @@ private:
             all = all && m.armed;
         });
         all_armed = all && set.limits.probes == 0;
+    }
+
+    // What the state does next after the actions at t* (y the state after them, g every g there): for each
+    // event, the sign of g(t* + d, y + d y') - g(t*, y), the change of g along the tangent (one evaluation of
+    // f; d = sqrt(eps) h, the forward difference's step that balances truncation against rounding), which is
+    // the sign of dg/dt along f wherever that is not zero (exact for a g linear in y, such as a height). The sign before the event is the wrong guide
+    // (OrdinaryDiffEq.jl #469: a bounce turns a downcrossing into an upcrossing), and so is g a little later
+    // (a bounce's next landing can come sooner than any representable time after t*). Then:
+    //   - an event that fired at this location (bracket end t_b) is `through` when g heads the way its
+    //     crossing went (a dose on a time event) and not when the action turned it back (a bounce): see
+    //     fire_all;
+    //   - an event left at g exactly zero (a bounce located exactly on the floor) is measured from the side
+    //     it heads to (g becomes the least normal T of that sign: a subnormal would be zero under flush-to-zero), so that rearm arms it at once and a
+    //     second landing in the same step is seen; without it, it would wait for |g| > 0 at a step's end.
+    // A change that is zero, NaN or Inf (the extrapolation is no state of the run) tells nothing: the event
+    // keeps the rules it had without this.
+    template <class System>
+    ODESTEP_EVENTS_NOINLINE void headings(System& f, set_type& set, T t_star, T t_b, T h, const pack& y, values& g) {
+        pack slope;
+        if constexpr (K == 1) {
+            odestep::detail::evaluate(f, t_star, y[0], slope[0]);
+        } else {
+            slope[0] = y[1];
+            slope[1] = acceleration(f, t_star, y[0], y[1]);
+        }
+        const T d = std::sqrt(std::numeric_limits<T>::epsilon()) * h;
+        pack ahead;
+        for (std::size_t k = 0; k < K; ++k)
+            for (std::size_t n = 0; n < y[k].size(); ++n) ahead[k][n] = y[k][n] + d * slope[k][n];
+        values g_ahead;
+        evaluate(set, t_star + d, pointers(ahead), g_ahead);
+        for (std::size_t i = 0; i < E; ++i) {
+            const T change = g_ahead[i] - g[i];
+            if (!is_finite(change) || change == T(0)) continue;
+            event_memory<T>& m = memory[i];
+            // (m.g is still the value before the crossing: it went from m.g's side to the other)
+            if (m.fired != 0 && m.last == t_star && m.until == t_b)
+                m.through = m.g < T(0) ? change > T(0) : change < T(0);
+            if (g[i] == T(0)) g[i] = change > T(0) ? std::numeric_limits<T>::min() : -std::numeric_limits<T>::min();
+        }
     }
 
     // The state s into the pass from (t_s, start) to (t_end, y_end), into out: by re-stepping (the stepper's
@@ -690,7 +728,7 @@ private:
             event_memory<T>& m = memory[i];
             if (!(m.armed && crosses(e.direction, m.g, g_b[i]))) return;
             const T tolerance = max_value(e.tolerance, same_root);
-            if (forward ? !(t_star > m.until + tolerance) : !(t_star < m.until - tolerance)) return;
+            if (m.through && (forward ? !(t_star > m.until + tolerance) : !(t_star < m.until - tolerance))) return;
             if (fired_here >= set.limits.max_firings_per_step) {
                 limited = true;
                 return;
@@ -700,6 +738,7 @@ private:
             m.fired += 1;
             m.last = t_star;
             m.until = t_b;
+            m.through = true;  // (set_headings decides after an action)
             sink(fired_here, i, t_star);
             fired_here += 1;
             // The direction the crossing went: from below zero, rising; from above, falling.
