@@ -591,7 +591,8 @@ private:
                 if (sl != status::ok) return sl;
             }
             interpolate(start, y_end, d, s, h, out);
-            return status::ok;
+            // finite ends and slopes can still give an overflowing cubic (h f near the largest T)
+            return all_finite_pack(out) ? status::ok : status::non_finite;
         } else {
             (void)d, (void)y_end, (void)h, (void)t_end;
             return restep(trial, f, start, t_s, s, out);
@@ -682,6 +683,7 @@ private:
                 status st = status::ok;
                 if constexpr (interpolates) {  // (each branch captures only what it reads)
                     interpolate(start, y_end, d, s_trial, h, trial_state);
+                    if (!all_finite_pack(trial_state)) st = status::non_finite;  // (see state_at)
                 } else {
                     st = restep(trial, f, start, t_s, s_trial, trial_state);
                 }
@@ -743,11 +745,10 @@ private:
             fired_here += 1;
             // The direction the crossing went: from below zero, rising; from above, falling.
             const direction crossed = m.g < T(0) ? direction::rising : direction::falling;
-            if (call_action<State>(e.action, t_star, crossed, y_star, seq{}) == event_result::stop) {
-                stop_index = i;
-            } else if constexpr (!keeps_state_v<Ev>) {
-                acted = true;
-            }
+            // acted: a callable ran, whether it stops the run or not (a stopping action may have changed the
+            // state too: the run then hands back, and the observer sees, the state it left)
+            if constexpr (!keeps_state_v<Ev>) acted = true;
+            if (call_action<State>(e.action, t_star, crossed, y_star, seq{}) == event_result::stop) stop_index = i;
         });
     }
 };
