@@ -11,13 +11,18 @@
 // the time of its last good state leaves that state bit for bit, and one that stopped inside a step stops
 // there with a finite state; every tick that is not an error counts one period (ticks() + 1), an error
 // none; an ok tick ends on the grid time it reached, t0 + reached() dt, which is finite (defect 5 of issue
-// 20: once t0 + n dt overflows, a tick is invalid_time); a stopped one inside its own period.
+// 20: once t0 + n dt overflows, a tick is invalid_time); a stopped one inside its own period. Issue 24: both
+// location modes (re-stepping, and on_interpolant: the selector byte's value / 6 is odd); an ok run ends on t1
+// bit for bit with finite states (the empty-run rule: ok never hands back a NaN); a stopped run's y and r.t
+// are its last observation; the firings of the event with the callable action equal the action's calls; every
+// firing a tick lists lies inside the tick.
 #include <odestep/odestep.hpp>
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -27,6 +32,12 @@
 namespace {
 
 using namespace odestep_fuzz;
+
+// The same bits (an ok run ends on t1 itself: -0.0 and +0.0 differ here).
+template <class S>
+bool same_scalar_bits(S a, S b) {
+    return std::memcmp(&a, &b, sizeof(S)) == 0;
+}
 
 using v2 = std::array<double, 2>;
 using T = double;
@@ -187,8 +198,9 @@ void run_integrate(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_co
     const T dt = in.number<T>();
     const T t1 = draw_t1(in, t0, dt);
     constexpr std::size_t E = Set::size;
-    const std::size_t bound = odestep::max_rhs_evals_per_step<Stepper>(E, set.limits);
-    const std::size_t g_bound = odestep::max_g_evals_per_step<T>(E, set.limits);
+    using finder = typename Set::finder;
+    const std::size_t bound = odestep::max_rhs_evals_per_step<Stepper, finder>(E, set.limits);
+    const std::size_t g_bound = odestep::max_g_evals_per_step<T, finder>(E, set.limits);
     loop_check<T, v2, K, script<T, 2>> check{&f, bound, t0, dt, t1, true, y};
     event_observer<K> observe{&check, &g, g_bound};
     system_of<K == 2> sys{&f};
@@ -209,14 +221,31 @@ void run_integrate(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_co
         g.actions == observe.actions_then && set.limits.probes == 0 && g.since <= E)  // as in run_ticks
         for (std::size_t k = 0; k < K; ++k)
             ODESTEP_FUZZ_CHECK(same_bits(y[k], check.last[k]), "a failed run whose state is not the last one observed");
+    // Issue 24: the firings of the event with the callable action (e1) are its calls; a stopped run's state and
+    // time are its last observation (B: also after a stopping action that changed the state at a step's start);
+    // an ok run ends on t1 bit for bit (A: -0.0 to +0.0 ends on +0.0), with finite states (the empty-run rule).
+    if (!rejects_argument(r.status)) {
+        ODESTEP_FUZZ_CHECK(r.firings[0] == g.actions, "the firings of an event are not the calls of its action");
+        if (r.status == odestep::status::stopped_by_event) {
+            ODESTEP_FUZZ_CHECK(check.observed > 0 && r.t == check.last_t, "a stopped run not at its last observation");
+            for (std::size_t k = 0; k < K; ++k)
+                ODESTEP_FUZZ_CHECK(same_bits(y[k], check.last[k]),
+                                   "a stopped run whose state is not the last observed");
+        }
+        if (r.status == odestep::status::ok) {
+            ODESTEP_FUZZ_CHECK(same_scalar_bits(r.t, t1), "an ok run that did not end on t1 bit for bit");
+            for (std::size_t k = 0; k < K; ++k) ODESTEP_FUZZ_CHECK(finite(y[k]), "an ok run with a state not finite");
+        }
+    }
     check.finish(r, y, false, 0);
 }
 
 template <class Stepper, std::size_t K, class Set>
 void run_ticks(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_counter& g, std::array<v2, K>& y) {
     constexpr std::size_t E = Set::size;
-    const std::size_t bound = odestep::max_rhs_evals_per_tick<Stepper>(E, set.limits);
-    const std::size_t g_bound = odestep::max_g_evals_per_tick<T>(E, set.limits);
+    using finder = typename Set::finder;
+    const std::size_t bound = odestep::max_rhs_evals_per_tick<Stepper, finder>(E, set.limits);
+    const std::size_t g_bound = odestep::max_g_evals_per_tick<T, finder>(E, set.limits);
     auto loop = odestep::make_event_stepper(stepper, set);
     system_of<K == 2> sys{&f};
     const auto tick = [&] { return std::apply([&](auto&... s) { return loop.tick(sys, s...); }, y); };
@@ -274,6 +303,15 @@ void run_ticks(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_counte
         ODESTEP_FUZZ_CHECK(loop.ticks() == n_before + (error ? 0U : 1U),
                            "a tick that was not an error did not count one period (or an error counted one)");
         ODESTEP_FUZZ_CHECK(r.t == loop.time(), "tick: r.t is not the loop's time");
+        ODESTEP_FUZZ_CHECK(loop.firings(0) == g.actions, "the firings of an event are not the calls of its action");
+        if (!error) {
+            const std::size_t listed = r.fired < r.firings.size() ? r.fired : r.firings.size();
+            const bool fwd = dt > T(0);
+            for (std::size_t k = 0; k < listed; ++k)
+                ODESTEP_FUZZ_CHECK(fwd ? (t_before <= r.firings[k].t && r.firings[k].t <= r.t)
+                                       : (t_before >= r.firings[k].t && r.firings[k].t >= r.t),
+                                   "a firing outside its tick");
+        }
         ODESTEP_FUZZ_CHECK(r.status != odestep::status::stopped_by_event || r.event < E, "stopped by no event");
         const bool forward = dt > T(0);
         const auto along = [forward](T a, T b) { return forward ? a <= b : a >= b; };
@@ -317,7 +355,7 @@ void run_set(reader& in, Stepper& stepper, Set set, script<T, 2>& f, g_counter& 
     }
 }
 
-template <class Stepper>
+template <class Stepper, class Finder>
 void run(reader& in) {
     constexpr std::size_t K = Stepper::system == odestep::system_form::first_order ? 1 : 2;
     script<T, 2> f;
@@ -334,9 +372,9 @@ void run(reader& in) {
     const auto e2 = with_settings(in, odestep::make_event<v2>(g2, draw_direction(in), odestep::record));
     const auto e3 = with_settings(in, odestep::make_event<v2>(g3, draw_direction(in), odestep::terminal));
     switch (in.index(3)) {
-        case 0: run_set<Stepper, K>(in, stepper, odestep::watch(e1), f, g); break;
-        case 1: run_set<Stepper, K>(in, stepper, odestep::watch(e1, e2), f, g); break;
-        default: run_set<Stepper, K>(in, stepper, odestep::watch(e1, e2, e3), f, g); break;
+        case 0: run_set<Stepper, K>(in, stepper, odestep::watch<Finder>(e1), f, g); break;
+        case 1: run_set<Stepper, K>(in, stepper, odestep::watch<Finder>(e1, e2), f, g); break;
+        default: run_set<Stepper, K>(in, stepper, odestep::watch<Finder>(e1, e2, e3), f, g); break;
     }
 }
 
@@ -348,6 +386,17 @@ using steppers =
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     reader in(data, size);
-    dispatch(in.index(steppers::size), steppers{}, [&](auto s) { run<typename decltype(s)::t>(in); });
+    // The selector: the stepper (value % 6) and the location mode ((value / 6) odd: on the interpolant), so
+    // that the inputs written before the mode existed (selector < 6) keep their meaning.
+    const std::uint8_t selector = in.byte();
+    const bool on_interpolant = (selector / steppers::size) % 2 == 1;
+    dispatch(selector % steppers::size, steppers{}, [&](auto s) {
+        using S = typename decltype(s)::t;
+        if (on_interpolant) {
+            run<S, odestep::on_interpolant<>>(in);
+        } else {
+            run<S, odestep::default_root_finder>(in);
+        }
+    });
     return 0;
 }
