@@ -200,3 +200,19 @@ TEST_CASE("issue 24 item 4: integrate takes a const event set") {
     CHECK(n.status == odestep::status::stopped_by_event);
     CHECK(std::abs(n.t - 1.0) <= 8 * std::numeric_limits<double>::epsilon());  // x = 1 - t^2 reaches 0 at 1
 }
+
+TEST_CASE("issue 24 (found by fuzz_events): a crossing whose bracket the finder's cap left wide is not a zero at t0") {
+    // g = sqrt(y) - 1e-3 along y = t is -1e-3 at t0 = 0 (far from zero) and crosses at t = 1e-6. g is concave,
+    // so the finder's first iterate (a secant or a bisection) lands after the root: with a cap of one
+    // iteration the bracket stays [0, s], its left end at t0. Before the fix the crossing was taken for a zero
+    // at the start (located within the window after t0) and never fired: the run ended ok with no firing.
+    const auto ev = odestep::make_event<state1>([](double, const state1& y) { return std::sqrt(y[0]) - 1e-3; },
+                                                odestep::direction::rising);
+    state1 y{0.0};
+    const auto r = odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 1.0, 0.1,
+                                      odestep::watch(ev).with_limits({1, 8, 0}));
+    CHECK(r.status == odestep::status::stopped_by_event);
+    CHECK(r.fired == 1);
+    CHECK(r.t >= 0.0);
+    CHECK(r.t <= 1e-6);  // the bracket's left end: at or before the root
+}

@@ -175,12 +175,56 @@ struct system_of {
     v2 operator()(T t, const v2& y) const { return (*s)(t, y); }
 };
 
+// The missed-crossing property (issue 24) for the event with the callable action: when its g has opposite
+// strict signs, in its direction, at two consecutive observations, its action ran between them. Checked only
+// where the event is armed wherever g is not zero: a pure g (no drawn poison) and the default settings (no
+// band, dead time, firing limit or tolerance), and not over the first step: a root within the time resolution
+// of t0 (4 eps (|t0| + |dt|)) is taken for a zero at the start by design (a run begun at a stopped_by_event
+// state goes on), and a g steep enough can put one there from far away. g is read on a copy with a counter
+// of its own.
+template <std::size_t K>
+struct crossing_watch {
+    bool on = false;
+    g_function<K> g{nullptr};
+    g_counter own;
+    odestep::direction d = odestep::direction::either;
+    unsigned seen = 0;
+    T last = T(0);
+    unsigned actions_last = 0;
+
+    template <class Event>
+    void arm(const Event& e) {
+        g = e.g;
+        g.count = &own;
+        d = e.direction;
+        on = (g.poison_at == 0 || !impure()) && e.band == T(0) && e.dead_time == T(0) && e.max_firings == 0 &&
+             e.tolerance == T(0);
+    }
+    template <class... S>
+    void see(T t, unsigned actions, const S&... s) {
+        if (!on) return;
+        const T now = g(t, s...);
+        ODESTEP_FUZZ_TRACE("crossing watch: g %.17g at t %.17g (actions %u)\n", now, t, actions);
+        const bool falls = last > T(0) && now < T(0);
+        const bool rises = last < T(0) && now > T(0);
+        const bool crossed = d == odestep::direction::falling  ? falls
+                             : d == odestep::direction::rising ? rises
+                                                               : falls || rises;
+        ODESTEP_FUZZ_CHECK(!(seen >= 2 && crossed) || actions != actions_last,
+                           "g crossed between two observations and its event did not fire");
+        ++seen;
+        last = now;
+        actions_last = actions;
+    }
+};
+
 // The observer of integrate with events: loop_check, and the event functions' evaluations per grid step.
 template <std::size_t K>
 struct event_observer {
     loop_check<T, v2, K, script<T, 2>>* loop;
     g_counter* g;
     std::size_t g_bound;
+    crossing_watch<K>* crossing;
     unsigned actions_then = 0;  // the action calls up to the last observation
     template <class... S>
     void operator()(T t, const S&... s) {
@@ -188,6 +232,7 @@ struct event_observer {
                            "a step evaluated the event functions more often than max_g_evals_per_step");
         g->since = 0;
         actions_then = g->actions;
+        crossing->see(t, g->actions, s...);
         (*loop)(t, s...);
     }
 };
@@ -202,7 +247,9 @@ void run_integrate(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_co
     const std::size_t bound = odestep::max_rhs_evals_per_step<Stepper, finder>(E, set.limits);
     const std::size_t g_bound = odestep::max_g_evals_per_step<T, finder>(E, set.limits);
     loop_check<T, v2, K, script<T, 2>> check{&f, bound, t0, dt, t1, true, y};
-    event_observer<K> observe{&check, &g, g_bound};
+    crossing_watch<K> crossing;
+    crossing.arm(std::get<0>(set.events));
+    event_observer<K> observe{&check, &g, g_bound, &crossing};
     system_of<K == 2> sys{&f};
     const auto r = [&] {
         if constexpr (K == 1) {

@@ -335,7 +335,12 @@ private:
                         // side reads): the rest of the step starts again from the event.
                         // Each event is armed from what the state does next (see headings).
                         values g_next = g_cross;
-                        headings(f, set, t_star, t_b, step_h, a_state, g_next);
+                        if (!headings(f, set, t_star, t_b, step_h, a_state, g_next)) {
+                            // f not finite after the action: as when the rest of the step's first stage meets
+                            // it, non_finite at the event with the state the action left
+                            store(y, a_state);
+                            return outcome(status::non_finite, t_star, no_event);
+                        }
                         store(y, a_state);
                         for (std::size_t i = 0; i < E; ++i) memory[i].g = g_next[i];
                         rearm(set, t_star, g_next);
@@ -550,9 +555,10 @@ private:
     //     it heads to (g becomes the least normal T of that sign: a subnormal would be zero under flush-to-zero), so that rearm arms it at once and a
     //     second landing in the same step is seen; without it, it would wait for |g| > 0 at a step's end.
     // A change that is zero, NaN or Inf (the extrapolation is no state of the run) tells nothing: the event
-    // keeps the rules it had without this.
+    // keeps the rules it had without this. False if f itself is NaN or Inf at (t*, y): as from a step, the
+    // caller rolls back (the rest of the step would start with that very evaluation).
     template <class System>
-    ODESTEP_EVENTS_NOINLINE void headings(System& f, set_type& set, T t_star, T t_b, T h, const pack& y, values& g) {
+    ODESTEP_EVENTS_NOINLINE bool headings(System& f, set_type& set, T t_star, T t_b, T h, const pack& y, values& g) {
         pack slope;
         if constexpr (K == 1) {
             odestep::detail::evaluate(f, t_star, y[0], slope[0]);
@@ -560,6 +566,7 @@ private:
             slope[0] = y[1];
             slope[1] = acceleration(f, t_star, y[0], y[1]);
         }
+        if (!all_finite_pack(slope)) return false;
         const T d = std::sqrt(std::numeric_limits<T>::epsilon()) * h;
         pack ahead;
         for (std::size_t k = 0; k < K; ++k)
@@ -575,6 +582,7 @@ private:
                 m.through = m.g < T(0) ? change > T(0) : change < T(0);
             if (g[i] == T(0)) g[i] = change > T(0) ? std::numeric_limits<T>::min() : -std::numeric_limits<T>::min();
         }
+        return true;
     }
 
     // The state s into the pass from (t_s, start) to (t_end, y_end), into out: by re-stepping (the stepper's
@@ -717,9 +725,10 @@ private:
 
     // Fires, in order, the armed events that have crossed by b (g_b), at t* on the state y_star; t_b is the
     // time of b, the end of the bracket. A crossing located within the event's tolerance after its `until`
-    // (its last firing's bracket end, or the start or rearm) is that firing's own (an action that moved the
-    // state but not g) or a zero at the start (a run begun at a stopped_by_event state): it does not fire.
-    // acted: a callable action ran (and did not stop).
+    // (its last firing's bracket end, or the start or rearm), with its bracket ending within twice that, is
+    // that firing's own (an action that moved the state but not g) or a zero at the start (a run begun at a
+    // stopped_by_event state): it does not fire, unless the firing's action turned g back (through).
+    // acted: a callable action ran (whether it stopped the run or not).
     template <class Sink>
     void fire_all(set_type& set, T t_star, T t_b, bool forward, T same_root, const refs& y_star, const values& g_b,
                   Sink& sink, std::size_t& fired_here, std::size_t& stop_index, bool& limited, bool& acted) {
@@ -729,8 +738,12 @@ private:
             if (stop_index != no_event || limited) return;
             event_memory<T>& m = memory[i];
             if (!(m.armed && crosses(e.direction, m.g, g_b[i]))) return;
-            const T tolerance = max_value(e.tolerance, same_root);
-            if (m.through && (forward ? !(t_star > m.until + tolerance) : !(t_star < m.until - tolerance))) return;
+            // The same crossing as the last firing (or a zero at the start): located within the window after
+            // until, its whole bracket too (a bracket the finder's cap left wide may hold a later root: it fires).
+            const T window = max_value(e.tolerance, same_root);
+            const bool same = forward ? !(t_star > m.until + window) && !(t_b > m.until + T(2) * window)
+                                      : !(t_star < m.until - window) && !(t_b < m.until - T(2) * window);
+            if (m.through && same) return;
             if (fired_here >= set.limits.max_firings_per_step) {
                 limited = true;
                 return;
