@@ -13,7 +13,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "../adaptive/dense.hpp"
+#include "../detail/hermite.hpp"
 #include "../detail/ops.hpp"
 #include "../integrate.hpp"
 #include "../roots/bracket.hpp"
