@@ -65,9 +65,10 @@ flight throw_pebble(double dt, bool split, odestep::csv_observer* csv) {
     out.ok = r.status == odestep::status::stopped_by_event && r.event == 1 && r.firings[0] == 1 && r.fired == 2;
     out.ground_t = r.t;
     out.impact_speed = std::fabs(s[1]);
-    // r.steps grid steps, then the step that ended at the ground, and with "split" the rest of the apex's
-    // step taken again from the apex; what is left is the two locations.
-    out.ground_evals = calls - 4 * (r.steps + 1) - (split ? 4 : 0) - out.apex_evals;
+    // r.steps grid steps, then the step that ended at the ground, the rest of the apex's step taken again
+    // from the apex (4, after a callable action) and f at the apex for the way g heads next (1); what is left
+    // is the two locations.
+    out.ground_evals = calls - 4 * (r.steps + 1) - 4 - 1 - out.apex_evals;
     return out;
 }
 }  // namespace

@@ -77,10 +77,13 @@ struct run_outcome {
 
 /// THE fixed-step loop. `advance(t, h, t_next)` takes one step of h from the state at t to the grid time
 /// t_next and returns its step_outcome; the observer sees the initial state, every completed step, and
-/// the state where a terminal event stopped the run.
+/// the state where a terminal event stopped the run. An empty run (no step) ends as a run's first step
+/// would on its state: ok at t_end if it is finite, non_finite at t0 (the state untouched) if not.
 template <class T, class Advance, class Observer, class... States>
 run_outcome<T> run_grid(const grid_plan<T>& plan, Advance&& advance, Observer& observe, States&... ys) {
     observe(plan.clock.t0, static_cast<const States&>(ys)...);
+    if (plan.steps == 0 && !(all_finite(static_cast<const States&>(ys)) && ...))
+        return {status::non_finite, plan.clock.t0, 0, no_event};
     T t = plan.clock.t0;
     for (step_count i = 0; i < plan.steps; ++i) {
         const T next = plan.end_of(i);

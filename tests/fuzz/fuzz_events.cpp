@@ -11,13 +11,18 @@
 // the time of its last good state leaves that state bit for bit, and one that stopped inside a step stops
 // there with a finite state; every tick that is not an error counts one period (ticks() + 1), an error
 // none; an ok tick ends on the grid time it reached, t0 + reached() dt, which is finite (defect 5 of issue
-// 20: once t0 + n dt overflows, a tick is invalid_time); a stopped one inside its own period.
+// 20: once t0 + n dt overflows, a tick is invalid_time); a stopped one inside its own period. Issue 24: both
+// location modes (re-stepping, and on_interpolant: the selector byte's value / 6 is odd); an ok run ends on t1
+// bit for bit with finite states (the empty-run rule: ok never hands back a NaN); a stopped run's y and r.t
+// are its last observation; the firings of the event with the callable action equal the action's calls; every
+// firing a tick lists lies inside the tick.
 #include <odestep/odestep.hpp>
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -27,6 +32,12 @@
 namespace {
 
 using namespace odestep_fuzz;
+
+// The same bits (an ok run ends on t1 itself: -0.0 and +0.0 differ here).
+template <class S>
+bool same_scalar_bits(S a, S b) {
+    return std::memcmp(&a, &b, sizeof(S)) == 0;
+}
 
 using v2 = std::array<double, 2>;
 using T = double;
@@ -164,12 +175,56 @@ struct system_of {
     v2 operator()(T t, const v2& y) const { return (*s)(t, y); }
 };
 
+// The missed-crossing property (issue 24) for the event with the callable action: when its g has opposite
+// strict signs, in its direction, at two consecutive observations, its action ran between them. Checked only
+// where the event is armed wherever g is not zero: a pure g (no drawn poison) and the default settings (no
+// band, dead time, firing limit or tolerance), and not over the first step: a root within the time resolution
+// of t0 (4 eps (|t0| + |dt|)) is taken for a zero at the start by design (a run begun at a stopped_by_event
+// state goes on), and a g steep enough can put one there from far away. g is read on a copy with a counter
+// of its own.
+template <std::size_t K>
+struct crossing_watch {
+    bool on = false;
+    g_function<K> g{nullptr};
+    g_counter own;
+    odestep::direction d = odestep::direction::either;
+    unsigned seen = 0;
+    T last = T(0);
+    unsigned actions_last = 0;
+
+    template <class Event>
+    void arm(const Event& e) {
+        g = e.g;
+        g.count = &own;
+        d = e.direction;
+        on = (g.poison_at == 0 || !impure()) && e.band == T(0) && e.dead_time == T(0) && e.max_firings == 0 &&
+             e.tolerance == T(0);
+    }
+    template <class... S>
+    void see(T t, unsigned actions, const S&... s) {
+        if (!on) return;
+        const T now = g(t, s...);
+        ODESTEP_FUZZ_TRACE("crossing watch: g %.17g at t %.17g (actions %u)\n", now, t, actions);
+        const bool falls = last > T(0) && now < T(0);
+        const bool rises = last < T(0) && now > T(0);
+        const bool crossed = d == odestep::direction::falling  ? falls
+                             : d == odestep::direction::rising ? rises
+                                                               : falls || rises;
+        ODESTEP_FUZZ_CHECK(!(seen >= 2 && crossed) || actions != actions_last,
+                           "g crossed between two observations and its event did not fire");
+        ++seen;
+        last = now;
+        actions_last = actions;
+    }
+};
+
 // The observer of integrate with events: loop_check, and the event functions' evaluations per grid step.
 template <std::size_t K>
 struct event_observer {
     loop_check<T, v2, K, script<T, 2>>* loop;
     g_counter* g;
     std::size_t g_bound;
+    crossing_watch<K>* crossing;
     unsigned actions_then = 0;  // the action calls up to the last observation
     template <class... S>
     void operator()(T t, const S&... s) {
@@ -177,6 +232,7 @@ struct event_observer {
                            "a step evaluated the event functions more often than max_g_evals_per_step");
         g->since = 0;
         actions_then = g->actions;
+        crossing->see(t, g->actions, s...);
         (*loop)(t, s...);
     }
 };
@@ -187,10 +243,13 @@ void run_integrate(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_co
     const T dt = in.number<T>();
     const T t1 = draw_t1(in, t0, dt);
     constexpr std::size_t E = Set::size;
-    const std::size_t bound = odestep::max_rhs_evals_per_step<Stepper>(E, set.limits);
-    const std::size_t g_bound = odestep::max_g_evals_per_step<T>(E, set.limits);
+    using finder = typename Set::finder;
+    const std::size_t bound = odestep::max_rhs_evals_per_step<Stepper, finder>(E, set.limits);
+    const std::size_t g_bound = odestep::max_g_evals_per_step<T, finder>(E, set.limits);
     loop_check<T, v2, K, script<T, 2>> check{&f, bound, t0, dt, t1, true, y};
-    event_observer<K> observe{&check, &g, g_bound};
+    crossing_watch<K> crossing;
+    crossing.arm(std::get<0>(set.events));
+    event_observer<K> observe{&check, &g, g_bound, &crossing};
     system_of<K == 2> sys{&f};
     const auto r = [&] {
         if constexpr (K == 1) {
@@ -209,14 +268,31 @@ void run_integrate(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_co
         g.actions == observe.actions_then && set.limits.probes == 0 && g.since <= E)  // as in run_ticks
         for (std::size_t k = 0; k < K; ++k)
             ODESTEP_FUZZ_CHECK(same_bits(y[k], check.last[k]), "a failed run whose state is not the last one observed");
+    // Issue 24: the firings of the event with the callable action (e1) are its calls; a stopped run's state and
+    // time are its last observation (B: also after a stopping action that changed the state at a step's start);
+    // an ok run ends on t1 bit for bit (A: -0.0 to +0.0 ends on +0.0), with finite states (the empty-run rule).
+    if (!rejects_argument(r.status)) {
+        ODESTEP_FUZZ_CHECK(r.firings[0] == g.actions, "the firings of an event are not the calls of its action");
+        if (r.status == odestep::status::stopped_by_event) {
+            ODESTEP_FUZZ_CHECK(check.observed > 0 && r.t == check.last_t, "a stopped run not at its last observation");
+            for (std::size_t k = 0; k < K; ++k)
+                ODESTEP_FUZZ_CHECK(same_bits(y[k], check.last[k]),
+                                   "a stopped run whose state is not the last observed");
+        }
+        if (r.status == odestep::status::ok) {
+            ODESTEP_FUZZ_CHECK(same_scalar_bits(r.t, t1), "an ok run that did not end on t1 bit for bit");
+            for (std::size_t k = 0; k < K; ++k) ODESTEP_FUZZ_CHECK(finite(y[k]), "an ok run with a state not finite");
+        }
+    }
     check.finish(r, y, false, 0);
 }
 
 template <class Stepper, std::size_t K, class Set>
 void run_ticks(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_counter& g, std::array<v2, K>& y) {
     constexpr std::size_t E = Set::size;
-    const std::size_t bound = odestep::max_rhs_evals_per_tick<Stepper>(E, set.limits);
-    const std::size_t g_bound = odestep::max_g_evals_per_tick<T>(E, set.limits);
+    using finder = typename Set::finder;
+    const std::size_t bound = odestep::max_rhs_evals_per_tick<Stepper, finder>(E, set.limits);
+    const std::size_t g_bound = odestep::max_g_evals_per_tick<T, finder>(E, set.limits);
     auto loop = odestep::make_event_stepper(stepper, set);
     system_of<K == 2> sys{&f};
     const auto tick = [&] { return std::apply([&](auto&... s) { return loop.tick(sys, s...); }, y); };
@@ -274,6 +350,15 @@ void run_ticks(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_counte
         ODESTEP_FUZZ_CHECK(loop.ticks() == n_before + (error ? 0U : 1U),
                            "a tick that was not an error did not count one period (or an error counted one)");
         ODESTEP_FUZZ_CHECK(r.t == loop.time(), "tick: r.t is not the loop's time");
+        ODESTEP_FUZZ_CHECK(loop.firings(0) == g.actions, "the firings of an event are not the calls of its action");
+        if (!error) {
+            const std::size_t listed = r.fired < r.firings.size() ? r.fired : r.firings.size();
+            const bool fwd = dt > T(0);
+            for (std::size_t k = 0; k < listed; ++k)
+                ODESTEP_FUZZ_CHECK(fwd ? (t_before <= r.firings[k].t && r.firings[k].t <= r.t)
+                                       : (t_before >= r.firings[k].t && r.firings[k].t >= r.t),
+                                   "a firing outside its tick");
+        }
         ODESTEP_FUZZ_CHECK(r.status != odestep::status::stopped_by_event || r.event < E, "stopped by no event");
         const bool forward = dt > T(0);
         const auto along = [forward](T a, T b) { return forward ? a <= b : a >= b; };
@@ -317,7 +402,7 @@ void run_set(reader& in, Stepper& stepper, Set set, script<T, 2>& f, g_counter& 
     }
 }
 
-template <class Stepper>
+template <class Stepper, class Finder>
 void run(reader& in) {
     constexpr std::size_t K = Stepper::system == odestep::system_form::first_order ? 1 : 2;
     script<T, 2> f;
@@ -334,9 +419,9 @@ void run(reader& in) {
     const auto e2 = with_settings(in, odestep::make_event<v2>(g2, draw_direction(in), odestep::record));
     const auto e3 = with_settings(in, odestep::make_event<v2>(g3, draw_direction(in), odestep::terminal));
     switch (in.index(3)) {
-        case 0: run_set<Stepper, K>(in, stepper, odestep::watch(e1), f, g); break;
-        case 1: run_set<Stepper, K>(in, stepper, odestep::watch(e1, e2), f, g); break;
-        default: run_set<Stepper, K>(in, stepper, odestep::watch(e1, e2, e3), f, g); break;
+        case 0: run_set<Stepper, K>(in, stepper, odestep::watch<Finder>(e1), f, g); break;
+        case 1: run_set<Stepper, K>(in, stepper, odestep::watch<Finder>(e1, e2), f, g); break;
+        default: run_set<Stepper, K>(in, stepper, odestep::watch<Finder>(e1, e2, e3), f, g); break;
     }
 }
 
@@ -348,6 +433,17 @@ using steppers =
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     reader in(data, size);
-    dispatch(in.index(steppers::size), steppers{}, [&](auto s) { run<typename decltype(s)::t>(in); });
+    // The selector: the stepper (value % 6) and the location mode ((value / 6) odd: on the interpolant), so
+    // that the inputs written before the mode existed (selector < 6) keep their meaning.
+    const std::uint8_t selector = in.byte();
+    const bool on_interpolant = (selector / steppers::size) % 2 == 1;
+    dispatch(selector % steppers::size, steppers{}, [&](auto s) {
+        using S = typename decltype(s)::t;
+        if (on_interpolant) {
+            run<S, odestep::on_interpolant<>>(in);
+        } else {
+            run<S, odestep::default_root_finder>(in);
+        }
+    });
     return 0;
 }

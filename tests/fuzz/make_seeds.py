@@ -155,13 +155,16 @@ def g(kind, k, c):
     return b(kind, k) + num(c) + b(1)  # no poison
 
 
-def events(stepper, tail, y=((1, 0),), shape=2, action=b(1, 1) + num(0.5), f=None, gs=None):
-    out = b(EVENTS.index(stepper)) + (f if f is not None else script(a=((0, 1), (-1, 0))))
+def events(stepper, tail, y=((1, 0),), shape=2, action=b(1, 1) + num(0.5), f=None, gs=None, interpolant=False,
+           directions=(1, 2, 2)):
+    """interpolant: the selector + 6 (on_interpolant); directions: 0 rising, 1 falling, 2 either."""
+    selector = EVENTS.index(stepper) + (len(EVENTS) if interpolant else 0)
+    out = b(selector) + (f if f is not None else script(a=((0, 1), (-1, 0))))
     # y0 = 0 (a bounce), y1 = 0 (recorded), t = 1e9 (terminal)
     out += gs if gs is not None else g(0, 0, 0) + g(0, 1, 0) + g(1, 0, 1e9)
     out += action
-    for direction in (1, 2, 2):
-        out += b(direction) + b(1)  # falling / either; default settings
+    for direction in directions:
+        out += b(direction) + b(1)  # default settings
     out += b(shape)
     for state in y:
         out += num(state[0]) + num(state[1])
@@ -216,6 +219,20 @@ def main():
         y = ((1, 0), (0, 1)) if newtonian else ((1, 0),)
         write("fuzz_events", "seed-integrate-%s" % name, events(name, events_integrate(0, 0.125, 8), y=y))
         write("fuzz_events", "seed-ticks-%s" % name, events(name, events_ticks(0, 0.125, 32, before=True), y=y))
+
+    # Issue 24's findings (each aborts fuzz_events before its fix). A: a run from -0.0 to +0.0 ended ok on -0.0.
+    timers = g(1, 0, 1e9) + g(1, 0, 1e9) + g(1, 0, 1e9)
+    write("fuzz_events", "regression-issue24-A-minus-zero-to-zero",
+          events("rk4", events_integrate("-0", 0.125, "0"), gs=timers))
+    # The empty-run rule: t0 == t1 with a NaN state returned ok (event functions finite there: timers).
+    write("fuzz_events", "regression-issue24-empty-run-nan-state",
+          events("rk4", events_integrate(0, 0.125, 0), y=(("nan", 0),), gs=timers))
+    # C: y' = y from 1e260 with dt = 1e10 on the interpolant: finite ends, an overflowing cubic inside; a
+    # timer at 5e9 (rising, callable action) was handed -Inf and the run ended with y = -Inf.
+    write("fuzz_events", "regression-issue24-C-interpolant-overflow",
+          events("rk4", events_integrate(0, 1e10, 1e10), y=((1e260, 0),), f=script(a=((1, 0), (0, 0))),
+                 gs=g(1, 0, 5e9) + g(1, 0, 1e300) + g(1, 0, 1e300), interpolant=True, directions=(0, 2, 2),
+                 action=b(0, 0) + num(0)))
 
     # Regressions: issue 20's defects 1 to 7, and what the targets found.
     # 1: a NaN from f in the midpoint rule's zero-weight stage, f ignoring y: ok before the fix.

@@ -124,7 +124,10 @@ constexpr status plan_run(T t0, T t1, T dt, grid_plan<T>& plan) noexcept {
     if (!is_finite(t0) || !is_finite(t1) || !is_finite(t1 - t0)) return status::invalid_time;
     if (!is_finite(dt) || dt == T(0)) return status::invalid_step;
     const T span = t1 - t0;
-    if (span == T(0)) return status::ok;
+    if (span == T(0)) {  // no step; the run still ends on t1 itself (from -0.0 to +0.0: +0.0)
+        plan.t_end = t1;
+        return status::ok;
+    }
     // The signs, not the quotient: span / dt can underflow to -0 or +0.
     if ((span > T(0)) != (dt > T(0))) return status::wrong_direction;
     const T ratio = span / dt;  // > 0, or +0 after an underflow

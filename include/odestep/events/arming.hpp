@@ -45,6 +45,10 @@ struct event_memory {
     T until = T(0);
     std::size_t fired = 0;
     bool armed = false;  // may fire: g has been seen away from zero (beyond the band, after the dead time)
+    // After the last firing the state went on through zero (no action, or an action after which g heads the
+    // way the crossing went, as a dose on a time event): a crossing within the tolerance after `until` is
+    // that firing's own. False when the action turned g back (a bounce): such a crossing is a new one.
+    bool through = true;
 };
 
 }  // namespace detail

@@ -33,18 +33,19 @@ constexpr std::size_t sat_mul(std::size_t a, std::size_t b) noexcept {
 
 /// The most right-hand-side evaluations (accelerations, for Newton's equations) one step with events can
 /// cost, for a stepper whose own step costs at most Stepper::rhs_evals_per_step:
-///   S [ (1 + F)(1 + P) + F E C ]
+///   S [ (1 + F)(1 + P) + F E C ] + F
 /// with F firings per step, P probes, E events and C root-finder iterations: the step and its probes, once
-/// more after each location whose action ran (the rest of the step from the event), and at most C re-steps
-/// for each event narrowed in each location (a step makes at most F locations, whether they fire or not).
+/// more after each location whose action ran (the rest of the step from the event), at most C re-steps
+/// for each event narrowed in each location (a step makes at most F locations, whether they fire or not),
+/// and one evaluation after each location whose action ran (f at the event, for the way g heads next).
 /// With no event firing and no probes it is S: the step itself, nothing more. SIZE_MAX when the bound does
 /// not fit std::size_t (such limits are refused with status::invalid_setting).
 ///
-/// Located on the interpolant (Finder = on_interpolant<...>) it is (1 + F)(S + 2) (S when F = P = 0): at
-/// most 1 + F passes, each the step and, if it probes or locates, f at its two ends for the Hermite
-/// slopes; probes and the finder's iterations read the interpolant and cost no evaluation. That is
-/// S [(1 + F) P + F E C] - 2 (1 + F) fewer than re-stepping (fewer whenever F E C >= 4, so for every default
-/// cap: RK4, two events, the default limits: 54 against 6564).
+/// Located on the interpolant (Finder = on_interpolant<...>) it is (1 + F)(S + 2) + F (S when F = P = 0):
+/// at most 1 + F passes, each the step and, if it probes or locates, f at its two ends for the Hermite
+/// slopes, and f at each event whose action ran; probes and the finder's iterations read the interpolant
+/// and cost no evaluation. That is S [(1 + F) P + F E C] - 2 (1 + F) fewer than re-stepping (fewer whenever
+/// F E C >= 4, so for every default cap: RK4, two events, the default limits: 62 against 6572).
 template <class Stepper, class Finder = default_root_finder,
           class T = typename std::remove_reference_t<Stepper>::value_type>
 constexpr std::size_t max_rhs_evals_per_step(std::size_t events, event_limits limits = {}) noexcept {
@@ -56,14 +57,16 @@ constexpr std::size_t max_rhs_evals_per_step(std::size_t events, event_limits li
     if constexpr (detail::locates_on_interpolant_v<Finder>) {
         (void)events;
         if (f == 0 && p == 0) return s;  // no pass probes or locates: no slopes
-        return sat_mul(sat_add(1, f), sat_add(s, 2));
+        return sat_add(sat_mul(sat_add(1, f), sat_add(s, 2)), f);
     }
-    return sat_mul(s, sat_add(sat_mul(sat_add(1, f), sat_add(1, p)),
-                              sat_mul(sat_mul(f, events), detail::event_iterations<T, Finder>(limits))));
+    return sat_add(sat_mul(s, sat_add(sat_mul(sat_add(1, f), sat_add(1, p)),
+                                      sat_mul(sat_mul(f, events), detail::event_iterations<T, Finder>(limits)))),
+                   f);
 }
 
 /// The most evaluations of event functions one step can cost (all events together):
-///   E (1 + F)(1 + P) + F E (C + E + 2).
+///   E (1 + F)(1 + P) + F E (C + E + 3)
+/// (the last E of each location: every g along the tangent after an action, for the way it heads next).
 /// With no event firing and no probes it is E: one per event, at the step's end. SIZE_MAX when it does not
 /// fit std::size_t.
 template <class T, class Finder = default_root_finder>
@@ -74,7 +77,7 @@ constexpr std::size_t max_g_evals_per_step(std::size_t events, event_limits limi
     const std::size_t p = limits.probes;
     const std::size_t c = detail::event_iterations<T, Finder>(limits);
     return sat_add(sat_mul(events, sat_mul(sat_add(1, f), sat_add(1, p))),
-                   sat_mul(sat_mul(f, events), sat_add(c, sat_add(events, 2))));
+                   sat_mul(sat_mul(f, events), sat_add(c, sat_add(events, 3))));
 }
 
 /// The most right-hand-side evaluations one `event_stepper::tick` can cost: two steps' worth (a tick after

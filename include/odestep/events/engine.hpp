@@ -13,7 +13,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "../adaptive/dense.hpp"
+#include "../detail/hermite.hpp"
 #include "../detail/ops.hpp"
 #include "../integrate.hpp"
 #include "../roots/bracket.hpp"
@@ -117,7 +117,7 @@ public:
         if (!settings_valid(set)) return status::invalid_tolerance;
         values g{};
         if (!evaluate_all(set, t0, y, g)) return status::non_finite_event;
-        for (std::size_t i = 0; i < E; ++i) memory[i] = event_memory<T>{g[i], t0, t0, 0, false};
+        for (std::size_t i = 0; i < E; ++i) memory[i] = event_memory<T>{g[i], t0, t0, 0, false, true};
         rearm(set, t0, g);
         return status::ok;
     }
@@ -228,8 +228,12 @@ private:
         pack b_state;
         slopes d;  // (on the interpolant) the pass's slopes, computed when it first probes or locates
         // One pass per restart: the first, and one after each location whose action ran.
+        const bool forward = h > T(0);
+        const T step_h = h;  // (h becomes the rest of the step after an action)
         for (;;) {
             if constexpr (interpolates) d.ready = false;
+            // Crossings this close after an event's last firing (or the start) are the same crossing.
+            const T same_root = T(4) * std::numeric_limits<T>::epsilon() * (abs_value(t_s) + abs_value(h));
             if (partial) {
                 load(y, start);
                 s = call_step(stepper, f, y, t_s, h, seq{});
@@ -244,9 +248,6 @@ private:
                 if (partial) reset_if_any(stepper);
                 return outcome(status::ok, t_end, no_event);
             }
-            const bool forward = h > T(0);
-            // Crossings this close after an event's last firing (or the start) are the same crossing.
-            const T same_root = T(4) * std::numeric_limits<T>::epsilon() * (abs_value(t_s) + abs_value(h));
             // Scan (0, h] piece by piece (the pieces end at the probes and at h). lo is where the events'
             // memory was last updated; lo_state the state there.
             T lo = T(0);
@@ -332,9 +333,17 @@ private:
                     if (acted_here) {
                         // An action ran (it may have changed the state, or only a parameter the right-hand
                         // side reads): the rest of the step starts again from the event.
+                        // Each event is armed from what the state does next (see headings).
+                        values g_next = g_cross;
+                        if (!headings(f, set, t_star, t_b, step_h, a_state, g_next)) {
+                            // f not finite after the action: as when the rest of the step's first stage meets
+                            // it, non_finite at the event with the state the action left
+                            store(y, a_state);
+                            return outcome(status::non_finite, t_star, no_event);
+                        }
                         store(y, a_state);
-                        for (std::size_t i = 0; i < E; ++i) memory[i].g = g_cross[i];
-                        rearm(set, t_star, g_cross);
+                        for (std::size_t i = 0; i < E; ++i) memory[i].g = g_next[i];
+                        rearm(set, t_star, g_next);
                         reset_if_any(stepper);  // a history or a kept acceleration belongs to the old state
                         t_s = t_star;
                         h = t_end - t_star;
@@ -424,12 +433,6 @@ private:
         refs r;
         for (std::size_t k = 0; k < K; ++k) r[k] = &p[k];
         return r;
-    }
-    static bool same(const pack& a, const pack& b) {
-        for (std::size_t k = 0; k < K; ++k)
-            for (std::size_t n = 0; n < a[k].size(); ++n)
-                if (!(a[k][n] == b[k][n])) return false;
-        return true;
     }
     static bool all_finite_pack(const pack& p) {
         for (std::size_t k = 0; k < K; ++k)
@@ -539,6 +542,49 @@ private:
         all_armed = all && set.limits.probes == 0;
     }
 
+    // What the state does next after the actions at t* (y the state after them, g every g there): for each
+    // event, the sign of g(t* + d, y + d y') - g(t*, y), the change of g along the tangent (one evaluation of
+    // f; d = sqrt(eps) h, the forward difference's step that balances truncation against rounding), which is
+    // the sign of dg/dt along f wherever that is not zero (exact for a g linear in y, such as a height). The sign before the event is the wrong guide
+    // (OrdinaryDiffEq.jl #469: a bounce turns a downcrossing into an upcrossing), and so is g a little later
+    // (a bounce's next landing can come sooner than any representable time after t*). Then:
+    //   - an event that fired at this location (bracket end t_b) is `through` when g heads the way its
+    //     crossing went (a dose on a time event) and not when the action turned it back (a bounce): see
+    //     fire_all;
+    //   - an event left at g exactly zero (a bounce located exactly on the floor) is measured from the side
+    //     it heads to (g becomes the least normal T of that sign: a subnormal would be zero under flush-to-zero), so that rearm arms it at once and a
+    //     second landing in the same step is seen; without it, it would wait for |g| > 0 at a step's end.
+    // A change that is zero, NaN or Inf (the extrapolation is no state of the run) tells nothing: the event
+    // keeps the rules it had without this. False if f itself is NaN or Inf at (t*, y): as from a step, the
+    // caller rolls back (the rest of the step would start with that very evaluation).
+    template <class System>
+    ODESTEP_EVENTS_NOINLINE bool headings(System& f, set_type& set, T t_star, T t_b, T h, const pack& y, values& g) {
+        pack slope;
+        if constexpr (K == 1) {
+            odestep::detail::evaluate(f, t_star, y[0], slope[0]);
+        } else {
+            slope[0] = y[1];
+            slope[1] = acceleration(f, t_star, y[0], y[1]);
+        }
+        if (!all_finite_pack(slope)) return false;
+        const T d = std::sqrt(std::numeric_limits<T>::epsilon()) * h;
+        pack ahead;
+        for (std::size_t k = 0; k < K; ++k)
+            for (std::size_t n = 0; n < y[k].size(); ++n) ahead[k][n] = y[k][n] + d * slope[k][n];
+        values g_ahead;
+        evaluate(set, t_star + d, pointers(ahead), g_ahead);
+        for (std::size_t i = 0; i < E; ++i) {
+            const T change = g_ahead[i] - g[i];
+            if (!is_finite(change) || change == T(0)) continue;
+            event_memory<T>& m = memory[i];
+            // (m.g is still the value before the crossing: it went from m.g's side to the other)
+            if (m.fired != 0 && m.last == t_star && m.until == t_b)
+                m.through = m.g < T(0) ? change > T(0) : change < T(0);
+            if (g[i] == T(0)) g[i] = change > T(0) ? std::numeric_limits<T>::min() : -std::numeric_limits<T>::min();
+        }
+        return true;
+    }
+
     // The state s into the pass from (t_s, start) to (t_end, y_end), into out: by re-stepping (the stepper's
     // own state there: `trial`, a copy of the stepper, reset first, steps s from start), or on the
     // interpolant (Hermite from start, y_end and the slopes d, which the first call of a pass computes: f at
@@ -553,7 +599,8 @@ private:
                 if (sl != status::ok) return sl;
             }
             interpolate(start, y_end, d, s, h, out);
-            return status::ok;
+            // finite ends and slopes can still give an overflowing cubic (h f near the largest T)
+            return all_finite_pack(out) ? status::ok : status::non_finite;
         } else {
             (void)d, (void)y_end, (void)h, (void)t_end;
             return restep(trial, f, start, t_s, s, out);
@@ -644,6 +691,7 @@ private:
                 status st = status::ok;
                 if constexpr (interpolates) {  // (each branch captures only what it reads)
                     interpolate(start, y_end, d, s_trial, h, trial_state);
+                    if (!all_finite_pack(trial_state)) st = status::non_finite;  // (see state_at)
                 } else {
                     st = restep(trial, f, start, t_s, s_trial, trial_state);
                 }
@@ -677,9 +725,10 @@ private:
 
     // Fires, in order, the armed events that have crossed by b (g_b), at t* on the state y_star; t_b is the
     // time of b, the end of the bracket. A crossing located within the event's tolerance after its `until`
-    // (its last firing's bracket end, or the start or rearm) is that firing's own (an action that moved the
-    // state but not g) or a zero at the start (a run begun at a stopped_by_event state): it does not fire.
-    // acted: a callable action ran (and did not stop).
+    // (its last firing's bracket end, or the start or rearm), with its bracket ending within twice that, is
+    // that firing's own (an action that moved the state but not g) or a zero at the start (a run begun at a
+    // stopped_by_event state): it does not fire, unless the firing's action turned g back (through).
+    // acted: a callable action ran (whether it stopped the run or not).
     template <class Sink>
     void fire_all(set_type& set, T t_star, T t_b, bool forward, T same_root, const refs& y_star, const values& g_b,
                   Sink& sink, std::size_t& fired_here, std::size_t& stop_index, bool& limited, bool& acted) {
@@ -689,8 +738,12 @@ private:
             if (stop_index != no_event || limited) return;
             event_memory<T>& m = memory[i];
             if (!(m.armed && crosses(e.direction, m.g, g_b[i]))) return;
-            const T tolerance = max_value(e.tolerance, same_root);
-            if (forward ? !(t_star > m.until + tolerance) : !(t_star < m.until - tolerance)) return;
+            // The same crossing as the last firing (or a zero at the start): located within the window after
+            // until, its whole bracket too (a bracket the finder's cap left wide may hold a later root: it fires).
+            const T window = max_value(e.tolerance, same_root);
+            const bool same = forward ? !(t_star > m.until + window) && !(t_b > m.until + T(2) * window)
+                                      : !(t_star < m.until - window) && !(t_b < m.until - T(2) * window);
+            if (m.through && same) return;
             if (fired_here >= set.limits.max_firings_per_step) {
                 limited = true;
                 return;
@@ -700,15 +753,15 @@ private:
             m.fired += 1;
             m.last = t_star;
             m.until = t_b;
+            m.through = true;  // (set_headings decides after an action)
             sink(fired_here, i, t_star);
             fired_here += 1;
             // The direction the crossing went: from below zero, rising; from above, falling.
             const direction crossed = m.g < T(0) ? direction::rising : direction::falling;
-            if (call_action<State>(e.action, t_star, crossed, y_star, seq{}) == event_result::stop) {
-                stop_index = i;
-            } else if constexpr (!keeps_state_v<Ev>) {
-                acted = true;
-            }
+            // acted: a callable ran, whether it stops the run or not (a stopping action may have changed the
+            // state too: the run then hands back, and the observer sees, the state it left)
+            if constexpr (!keeps_state_v<Ev>) acted = true;
+            if (call_action<State>(e.action, t_star, crossed, y_star, seq{}) == event_result::stop) stop_index = i;
         });
     }
 };

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 
 #include "../detail/grid_clock.hpp"
 #include "../integrate.hpp"
@@ -20,8 +21,8 @@ namespace odestep {
 namespace detail {
 
 template <class T, class Stepper, class System, class Set, class Observer, class State, class... More>
-event_integrate_result<T, Set::size> drive_events(Stepper& stepper, System& f, Set& set, Observer& observe,
-                                                  status planned, const grid_plan<T>& plan, State& y0, More&... ys) {
+event_integrate_result<T, Set::size> drive_events_on(Stepper& stepper, System& f, Set& set, Observer& observe,
+                                                     status planned, const grid_plan<T>& plan, State& y0, More&... ys) {
     require_self_starting<Stepper>();
     constexpr std::size_t K = 1 + sizeof...(More);
     using engine_type = event_engine<State, K, Set>;
@@ -46,6 +47,19 @@ event_integrate_result<T, Set::size> drive_events(Stepper& stepper, System& f, S
         plan, [&](T t, T h, T next) { return engine.advance(stepper, f, set, y, t, h, next, sink); }, observe, y0,
         ys...);
     return finish(r.code, r.t, r.steps, r.event);
+}
+
+// A const set (integrate(..., const event_set&, ...)) runs on a copy: its g and actions are called as
+// non-const, as the engine calls them; the caller's set is left as it was.
+template <class T, class Stepper, class System, class Set, class Observer, class State, class... More>
+event_integrate_result<T, Set::size> drive_events(Stepper& stepper, System& f, Set& set, Observer& observe,
+                                                  status planned, const grid_plan<T>& plan, State& y0, More&... ys) {
+    if constexpr (std::is_const_v<Set>) {
+        std::remove_const_t<Set> copy = set;
+        return drive_events_on(stepper, f, copy, observe, planned, plan, y0, ys...);
+    } else {
+        return drive_events_on(stepper, f, set, observe, planned, plan, y0, ys...);
+    }
 }
 
 }  // namespace detail
