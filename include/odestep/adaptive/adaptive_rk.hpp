@@ -65,7 +65,7 @@ struct embedded_pair {
                                    State& err, State& err2) {
         if (!stage_loop::template run<true>(f, y, t, h, t_end, k, y_new, evaluated(std::make_index_sequence<S>{})))
             return false;
-        ODESTEP_STEP_UNROLL
+        ODESTEP_STEP_UNROLL_ALWAYS
         for (std::size_t n = 0; n < N; ++n) {
             if constexpr (!next_from_stage) y_new[n] = y[n] + sum_form::template sum<b_weights>(k, n, h);
             err[n] = sum_form::template sum<error_weights<0>>(k, n, h);

@@ -249,14 +249,15 @@ private:
         if constexpr (!Evaluate) {
             return true;
         } else {
+            const T ti = time<I>(t, h, t_end);
             if constexpr (first_nonzero<a_row<I>, T, S>() == S) {
-                evaluate(f, time<I>(t, h, t_end), y, k[I]);  // no a_Ij: the stage input is y itself
+                evaluate(f, ti, y, k[I]);  // no a_Ij: the stage input is y itself
             } else {
                 State input;
                 State& in = I == b_row ? next : input;  // the b row's input is y_{n+1}: kept as the new state
-                ODESTEP_STEP_UNROLL
+                ODESTEP_STEP_UNROLL_ALWAYS
                 for (std::size_t n = 0; n < N; ++n) in[n] = y[n] + sum_form::template sum<a_row<I>>(k, n, h);
-                evaluate(f, time<I>(t, h, t_end), static_cast<const State&>(in), k[I]);
+                evaluate(f, ti, static_cast<const State&>(in), k[I]);
             }
             if constexpr (StopAtNonFinite) {
                 return all_finite(k[I]);

@@ -133,7 +133,7 @@ private:
     static constexpr bool fused_total = checks_finiteness && detail::optimizing_for_size;
     static constexpr bool separate_total = checks_finiteness && !detail::optimizing_for_size;
     ODESTEP_INLINE static void add_all(T& total, const State& v) noexcept {
-        ODESTEP_STEP_UNROLL
+        ODESTEP_STEP_UNROLL_ALWAYS
         for (std::size_t n = 0; n < N; ++n) total += v[n];
     }
     // The unweighted stages' values (unweighted_stages) in the finiteness test of a step that returns
@@ -153,7 +153,7 @@ private:
     }
     template <std::size_t Estimates>
     ODESTEP_INLINE static void add_stages(T& total, const std::array<State, S>& k) noexcept {
-        ODESTEP_STEP_UNROLL
+        ODESTEP_STEP_UNROLL_ALWAYS
         for (std::size_t n = 0; n < N; ++n) add_stage_components<Estimates>(total, k, n);
     }
     template <std::size_t Estimates>
@@ -167,6 +167,8 @@ private:
 
     // The one step body, returning the estimates of the embedded weights Which... (none, the first, or both)
     // in `error...`. Checked, the results go to locals and are copied out only when all are finite.
+    // Flattened itself, not merely always-inlined: GCC at -Os does not flatten the calls an always-inlined
+    // callee brings into the flattened `step`, and f would stay out of line.
     template <class System, std::size_t... Which, class... Errors>
     ODESTEP_STEP_FLATTEN status step_estimating(System& f, State& y, T t, T dt, std::index_sequence<Which...>,
                                                 Errors&... error) const {
@@ -181,7 +183,7 @@ private:
         [[maybe_unused]] std::array<State, estimates> err;
         [[maybe_unused]] const auto err_out = std::tie(detail::result_target<!checks_finiteness>(err[Which], error)...);
         T total = -T(0);  // x + (-0) is x, exactly: the compiler drops that first addition
-        ODESTEP_STEP_UNROLL
+        ODESTEP_STEP_UNROLL_ALWAYS
         for (std::size_t n = 0; n < N; ++n) {
             if constexpr (!next_from_stage<with_error>) out[n] = y[n] + sum<b_weights>(k, n, dt);
             ((std::get<Which>(err_out)[n] = sum<error_weights<Which>>(k, n, dt)), ...);
