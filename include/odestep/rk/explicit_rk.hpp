@@ -174,35 +174,52 @@ private:
                                                 Errors&... error) const {
         constexpr std::size_t estimates = sizeof...(Which);
         constexpr bool with_error = estimates > 0;
+        static_assert(estimates <= 2, "odestep: explicit_rk returns at most two estimates");
         std::array<State, S> k;  // not zeroed: every stage the step reads is written first
         State next;
         stage_loop::template run<false>(f, y, t, dt, t + dt, k, next,
                                         evaluated<with_error>(std::make_index_sequence<S>{}));
         constexpr bool in_place = !checks_finiteness && !next_from_stage<with_error>;
         State& out = detail::result_target<in_place>(next, y);
-        [[maybe_unused]] std::array<State, estimates> err;
-        [[maybe_unused]] const auto err_out = std::tie(detail::result_target<!checks_finiteness>(err[Which], error)...);
+        // The estimates' locals, two objects rather than an array of two: GCC's vectorizer then pairs the
+        // components as it does in the hand loop (as an array, float DOP853 took 4% more instructions at -O2).
+        [[maybe_unused]] State err0;
+        [[maybe_unused]] State err1;
+        [[maybe_unused]] const auto err_out =
+            std::tie(detail::result_target<!checks_finiteness>(local_estimate<Which>(err0, err1), error)...);
         T total = -T(0);  // x + (-0) is x, exactly: the compiler drops that first addition
         ODESTEP_STEP_UNROLL_ALWAYS
         for (std::size_t n = 0; n < N; ++n) {
             if constexpr (!next_from_stage<with_error>) out[n] = y[n] + sum<b_weights>(k, n, dt);
             ((std::get<Which>(err_out)[n] = sum<error_weights<Which>>(k, n, dt)), ...);
             if constexpr (fused_total) {
-                total += (next[n] + ... + err[Which][n]);
+                total += (next[n] + ... + local_estimate<Which>(err0, err1)[n]);
                 add_stage_components<estimates>(total, k, n);
             }
         }
         if constexpr (separate_total) {
             add_all(total, next);
-            (add_all(total, err[Which]), ...);
+            (add_all(total, local_estimate<Which>(err0, err1)), ...);
             add_stages<estimates>(total, k);
         }
         if (ODESTEP_UNLIKELY(!detail::finite_sum_under<Check>(total)) &&
-            !(detail::each_finite(next) && (detail::each_finite(err[Which]) && ...) && stages_finite<estimates>(k)))
+            !(detail::each_finite(next) && (detail::each_finite(local_estimate<Which>(err0, err1)) && ...) &&
+              stages_finite<estimates>(k)))
             return status::non_finite;
         if constexpr (!in_place) detail::assign<detail::copy_form::block_at_size>(y, next);
-        if constexpr (checks_finiteness) (detail::assign<detail::copy_form::block_at_size>(error, err[Which]), ...);
+        if constexpr (checks_finiteness)
+            (detail::assign<detail::copy_form::block_at_size>(error, local_estimate<Which>(err0, err1)), ...);
         return status::ok;
+    }
+
+    // The local of estimate W (step_estimating): the first or the second.
+    template <std::size_t W>
+    ODESTEP_INLINE static State& local_estimate(State& first, State& second) noexcept {
+        if constexpr (W == 0) {
+            return first;
+        } else {
+            return second;
+        }
     }
 
     // Weight rows as types, so that each weight is a constant expression inside `sum`.
