@@ -11,7 +11,7 @@
 //   orbit_r  half the peak-to-peak excursion of y (across the drift) over the last tenth of the run
 // next to the exact E/B and v_perp / omega_c. The Boris pusher keeps x at the step times and v half a step
 // behind: `stagger` moves the initial v back by dt/2 and `synchronize` brings the final v to t.
-#include <odestep/boris.hpp>
+#include <odestep/newtonian/boris.hpp>
 #include <odestep/odestep.hpp>
 
 #include <array>

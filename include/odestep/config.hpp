@@ -7,28 +7,43 @@
 /// The macros every odestep header uses. Each may be defined by the user before the first odestep header
 /// to override the choice made here (for a compiler the library does not know).
 
-// Loops over the components of a state are unrolled (fully, for up to 16 components) except where the
-// build optimizes for size: there the loop is smaller, and flash is what counts.
-#ifndef ODESTEP_UNROLL
-#if defined(__OPTIMIZE_SIZE__) || !(defined(__GNUC__) || defined(__clang__))
-#define ODESTEP_UNROLL
+// Two unrolling macros, named for when they unroll. Each also keeps its name of before 0.2.0, deprecated
+// (removed in 1.0.0): ODESTEP_UNROLL for ODESTEP_UNROLL_UNLESS_SIZE, ODESTEP_STEP_UNROLL for
+// ODESTEP_STEP_UNROLL_ALWAYS. A user's definition of either name, old or new, sets both.
+
+// Loops over the components of a state outside a step (whole-state operations, the C API's copies) are
+// unrolled (fully, for up to 16 components) except where the build optimizes for size: there the loop is
+// smaller, and flash is what counts.
+#ifndef ODESTEP_UNROLL_UNLESS_SIZE
+#if defined(ODESTEP_UNROLL)
+#define ODESTEP_UNROLL_UNLESS_SIZE ODESTEP_UNROLL
+#elif defined(__OPTIMIZE_SIZE__) || !(defined(__GNUC__) || defined(__clang__))
+#define ODESTEP_UNROLL_UNLESS_SIZE
 #else
-#define ODESTEP_UNROLL _Pragma("GCC unroll 16")
+#define ODESTEP_UNROLL_UNLESS_SIZE _Pragma("GCC unroll 16")
 #endif
+#endif
+#ifndef ODESTEP_UNROLL
+#define ODESTEP_UNROLL ODESTEP_UNROLL_UNLESS_SIZE
 #endif
 
 // The loops over the components inside one step of the explicit Runge-Kutta steppers, of the Adams methods
 // and of the Newtonian ones (velocity Verlet, Beeman, the splittings) are unrolled at every optimization
 // level, -Os included: unrolled and with the right-hand side inlined (ODESTEP_STEP_FLATTEN) the step is as
-// fast as the same step written out by hand (x86-64 -Os, Lorenz RK4: 105 instructions against 213 rolled;
-// Lorenz AB4: 108 against 154). Define it empty (with ODESTEP_STEP_FLATTEN) for the rolled, smaller -Os
-// code of before (docs/performance.md, "-Os").
-#ifndef ODESTEP_STEP_UNROLL
-#if defined(__GNUC__) || defined(__clang__)
-#define ODESTEP_STEP_UNROLL _Pragma("GCC unroll 16")
+// fast as the same step written out by hand, where the rolled loop spills what is live across the calls of
+// f. Define it empty (with ODESTEP_STEP_FLATTEN) for the rolled, smaller -Os code (docs/performance.md,
+// "-Os", has the figures).
+#ifndef ODESTEP_STEP_UNROLL_ALWAYS
+#if defined(ODESTEP_STEP_UNROLL)
+#define ODESTEP_STEP_UNROLL_ALWAYS ODESTEP_STEP_UNROLL
+#elif defined(__GNUC__) || defined(__clang__)
+#define ODESTEP_STEP_UNROLL_ALWAYS _Pragma("GCC unroll 16")
 #else
-#define ODESTEP_STEP_UNROLL
+#define ODESTEP_STEP_UNROLL_ALWAYS
 #endif
+#endif
+#ifndef ODESTEP_STEP_UNROLL
+#define ODESTEP_STEP_UNROLL ODESTEP_STEP_UNROLL_ALWAYS
 #endif
 
 // Where the build optimizes for size, those steps inline every call in them, the right-hand side's (the

@@ -4,7 +4,7 @@
 // rejection at a sharp change, the substep cap and NaN with their roll-backs, the driving loops and events.
 #include <doctest/doctest.h>
 #include <odestep/adaptive/adaptive_rk.hpp>
-#include <odestep/events.hpp>
+#include <odestep/events/events.hpp>
 #include <odestep/integrate.hpp>
 
 #include <array>

@@ -4,8 +4,8 @@
 // is what integrate() makes of it.
 #include <doctest/doctest.h>
 #include <odestep/adaptive.hpp>
-#include <odestep/explicit_rk.hpp>
 #include <odestep/integrate.hpp>
+#include <odestep/rk/explicit_rk.hpp>
 
 #include <array>
 #include <cmath>

@@ -6,14 +6,14 @@
 #include <cstdio>
 #include <cstring>
 
-#include "odestep/events.hpp"
-#include "odestep/explicit_rk.hpp"
+#include "odestep/events/events.hpp"
 #include "odestep/integrate.hpp"
-#include "odestep/multistep.hpp"
-#include "odestep/newtonian.hpp"
+#include "odestep/multistep/adams.hpp"
+#include "odestep/newtonian/classic.hpp"
+#include "odestep/newtonian/splitting.hpp"
 #include "odestep/odestep.h"
+#include "odestep/rk/explicit_rk.hpp"
 #include "odestep/status.hpp"
-#include "odestep/symplectic.hpp"
 
 namespace {
 

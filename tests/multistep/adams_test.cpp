@@ -3,7 +3,7 @@
 // (step_mismatch), rollback of a non-finite step, the fixed-step loops and the evaluation counts.
 #include <doctest/doctest.h>
 #include <odestep/integrate.hpp>
-#include <odestep/multistep.hpp>
+#include <odestep/multistep/adams.hpp>
 
 #include <array>
 #include <cmath>

@@ -3,7 +3,7 @@
 // the E x B drift, order 2, the half-step convention for v, volume preservation and time reversibility,
 // the relativistic variant, float, and NaN rollback.
 #include <doctest/doctest.h>
-#include <odestep/boris.hpp>
+#include <odestep/newtonian/boris.hpp>
 #include <odestep/odestep.hpp>
 
 #include <array>

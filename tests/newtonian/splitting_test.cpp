@@ -3,8 +3,8 @@
 // angular momentum over 10^6 steps, time reversibility, the kept acceleration (first same as last),
 // float, rollback and bad input.
 #include <doctest/doctest.h>
+#include <odestep/newtonian/splitting.hpp>
 #include <odestep/odestep.hpp>
-#include <odestep/symplectic.hpp>
 
 #include <algorithm>
 #include <array>
@@ -121,7 +121,7 @@ constexpr std::size_t kepler_coarsest_steps() {
 }
 template <class M>
 constexpr std::size_t kepler_points() {
-    return std::is_same_v<M, odestep::splittings::blanes_moan4> ? 3 : 4;
+    return std::is_same_v<M, odestep::tables::blanes_moan4> ? 3 : 4;
 }
 
 // Runs `steps` steps forward with dt and `steps` back with -dt through integrate_n_steps.
@@ -244,9 +244,9 @@ TEST_CASE("the first- and second-order splittings are, update for update, the fo
 }
 
 TEST_CASE("the tables' coefficients: Forest-Ruth's gamma, Yoshida's w and Blanes-Moan's a, b as published") {
-    using odestep::splittings::blanes_moan4;
-    using odestep::splittings::forest_ruth;
-    using odestep::splittings::yoshida6;
+    using odestep::tables::blanes_moan4;
+    using odestep::tables::forest_ruth;
+    using odestep::tables::yoshida6;
     // gamma = 1 / (2 - 2^(1/3)) = 1.3512071919596576340... (Forest & Ruth 1990, eq. 4.8)
     constexpr auto fr = forest_ruth::table<long double>;
     const long double gamma = 1.0L / (2.0L - std::cbrt(2.0L));
@@ -336,8 +336,8 @@ TEST_CASE(
 TEST_CASE("Blanes-Moan SRKN6b: at the cost of Forest-Ruth, an error smaller by more than 100") {
     // Six evaluations per step against three: N Blanes-Moan steps cost what 2N Forest-Ruth steps cost.
     // Measured on the half orbit: 1.5e-10 against 8.3e-8 (N = 256), a factor 550.
-    const double bm = kepler_half_orbit_error<odestep::splittings::blanes_moan4, double>(256);
-    const double fr = kepler_half_orbit_error<odestep::splittings::forest_ruth, double>(512);
+    const double bm = kepler_half_orbit_error<odestep::tables::blanes_moan4, double>(256);
+    const double fr = kepler_half_orbit_error<odestep::tables::forest_ruth, double>(512);
     MESSAGE("same cost: Blanes-Moan ", bm, ", Forest-Ruth ", fr, ", ratio ", fr / bm);
     CHECK(bm * 100 < fr);
 }
@@ -786,9 +786,9 @@ static_assert(std::is_same_v<decltype(std::declval<const odestep::forest_ruth<st
                                  kepler{}, std::declval<state&>(), std::declval<state&>(), 0.0, 0.1)),
                              odestep::status>);
 // Every table passes its compile-time checks in every scalar.
-static_assert(odestep::is_consistent(odestep::splittings::yoshida6::table<float>));
-static_assert(odestep::is_consistent(odestep::splittings::blanes_moan4::table<long double>));
-static_assert(odestep::is_consistent(odestep::splittings::forest_ruth::table<float>));
+static_assert(odestep::is_consistent(odestep::tables::yoshida6::table<float>));
+static_assert(odestep::is_consistent(odestep::tables::blanes_moan4::table<long double>));
+static_assert(odestep::is_consistent(odestep::tables::forest_ruth::table<float>));
 
 TEST_CASE(
     "velocity Verlet keeps its acceleration far from t = 0 too: 20000 steps from t0 = -1000 cost 20001 evaluations") {

@@ -297,3 +297,13 @@ TEST_CASE("explicit_rk: float, double and long double steppers come from the sam
 // Compile-time: the traits are constants of the right type.
 static_assert(std::is_same_v<odestep::rk4<std::array<float, 3>>::value_type, float>);
 static_assert(odestep::rk4<std::array<float, 3>>::rhs_evals_per_step == 4);
+
+// The one first-same-as-last detector (tables/butcher.hpp), which explicit_rk and the adaptive engine share:
+// the stage whose row of a is b. Dormand & Prince (1980): the seventh row of a is b (c_7 = 1); Bogacki &
+// Shampine (1989): the fourth; RK4 and Cash-Karp have none (b_4 = 1/6 and b_6 = 512/1771 are not zero).
+static_assert(odestep::detail::b_row(odestep::tables::dormand_prince54::table<double>) == 6);
+static_assert(odestep::detail::b_row(odestep::tables::bogacki_shampine32::table<float>) == 3);
+static_assert(odestep::detail::b_row(odestep::tables::rk4::table<double>) == 4);
+static_assert(odestep::detail::b_row(odestep::tables::cash_karp54::table<double>) == 6);
+static_assert(odestep::detail::first_same_as_last(odestep::tables::dormand_prince54::table<long double>));
+static_assert(!odestep::detail::first_same_as_last(odestep::tables::cash_karp54::table<double>));

@@ -66,7 +66,7 @@ void check_order(const fit_plan& plan) {
 TEST_CASE("every method reaches its nominal order on y0' = y0 y1, y1' = -y2, y2' = y1 (slope within 0.2)") {
     odestep_test::for_each_method([](auto method) {
         using M = decltype(method);
-        if constexpr (std::is_same_v<M, odestep::tableaux::dop853>) {
+        if constexpr (std::is_same_v<M, odestep::tables::dop853>) {
             // DOP853's eighth-order error coefficients are so small that in double its error reaches
             // round-off (1e-14) while the ninth-order terms still dominate: local slopes 8.5 to 8.9 for
             // N = 80 to 640 at t_end = 100. Its asymptotic order shows in long double, N = 640 to 2560.

@@ -4,7 +4,7 @@
 // narrow enough, the cap, a non-finite f, an exact zero, constant evaluation, and the call counts per
 // method (the measurement behind the event loop's default finder).
 #include <doctest/doctest.h>
-#include <odestep/bracket.hpp>
+#include <odestep/roots/bracket.hpp>
 
 #include <array>
 #include <cmath>

@@ -5,11 +5,11 @@
 #ifndef ODESTEP_TESTS_METHODS_HPP
 #define ODESTEP_TESTS_METHODS_HPP
 
-#include <odestep/bracket.hpp>
-#include <odestep/multistep.hpp>
-#include <odestep/newtonian.hpp>
-#include <odestep/symplectic.hpp>
-#include <odestep/tableaux.hpp>
+#include <odestep/multistep/adams.hpp>
+#include <odestep/newtonian/classic.hpp>
+#include <odestep/newtonian/splitting.hpp>
+#include <odestep/roots/bracket.hpp>
+#include <odestep/tables/runge_kutta.hpp>
 #include <tuple>
 
 #include "type_list.hpp"
@@ -18,11 +18,10 @@ namespace odestep_test {
 
 /// Every explicit Runge-Kutta table of the library, in the order of tableaux.hpp.
 using all_methods =
-    std::tuple<odestep::tableaux::euler, odestep::tableaux::midpoint, odestep::tableaux::heun,
-               odestep::tableaux::ralston2, odestep::tableaux::kutta3, odestep::tableaux::ssprk3,
-               odestep::tableaux::rk4, odestep::tableaux::rk38, odestep::tableaux::bogacki_shampine32,
-               odestep::tableaux::fehlberg45, odestep::tableaux::cash_karp54, odestep::tableaux::dormand_prince54,
-               odestep::tableaux::fehlberg78, odestep::tableaux::dop853>;
+    std::tuple<odestep::tables::euler, odestep::tables::midpoint, odestep::tables::heun, odestep::tables::ralston2,
+               odestep::tables::kutta3, odestep::tables::ssprk3, odestep::tables::rk4, odestep::tables::rk38,
+               odestep::tables::bogacki_shampine32, odestep::tables::fehlberg45, odestep::tables::cash_karp54,
+               odestep::tables::dormand_prince54, odestep::tables::fehlberg78, odestep::tables::dop853>;
 
 /// Calls f(Method{}) for every method of all_methods, in the order above.
 template <class F>
@@ -31,15 +30,14 @@ void for_each_method(F&& f) {
 }
 
 /// Every Adams table (odestep::adams<Table, State>).
-using adams_methods =
-    std::tuple<odestep::adams_tables::bashforth2, odestep::adams_tables::bashforth3, odestep::adams_tables::bashforth4,
-               odestep::adams_tables::bashforth5, odestep::adams_tables::bashforth_moulton4>;
+using adams_methods = std::tuple<odestep::tables::bashforth2, odestep::tables::bashforth3, odestep::tables::bashforth4,
+                                 odestep::tables::bashforth5, odestep::tables::bashforth_moulton4>;
 
 /// Every splitting table (odestep::splitting<Table, State>).
 using splitting_methods =
-    std::tuple<odestep::splittings::euler_cromer, odestep::splittings::euler_cromer_drift_first,
-               odestep::splittings::velocity_verlet, odestep::splittings::position_verlet,
-               odestep::splittings::forest_ruth, odestep::splittings::yoshida6, odestep::splittings::blanes_moan4>;
+    std::tuple<odestep::tables::euler_cromer, odestep::tables::euler_cromer_drift_first,
+               odestep::tables::velocity_verlet, odestep::tables::position_verlet, odestep::tables::forest_ruth,
+               odestep::tables::yoshida6, odestep::tables::blanes_moan4>;
 
 /// Every textbook Newtonian stepper that is not a splitting (newtonian/classic.hpp), on State.
 template <class State>

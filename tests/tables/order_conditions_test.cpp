@@ -8,12 +8,15 @@
 // Everything is iterative and in fixed-size arrays on the stack: this file also runs on bare-metal targets.
 #include <doctest/doctest.h>
 
-#include <odestep/tableaux.hpp>
+#include <odestep/tables/adams.hpp>
 #include <odestep/tables/implicit_rk.hpp>
+#include <odestep/tables/runge_kutta.hpp>
+#include <odestep/tables/splitting.hpp>
 
 #include <array>
 #include <cfloat>
 #include <cstddef>
+#include <type_traits>
 
 namespace {
 
@@ -344,3 +347,9 @@ TEST_CASE("tables: a single coefficient off by one part in a million breaks the 
     CHECK(s.violated >= 1);
     CHECK(s.worst_ratio > clear_violation_factor * round_off_factor);
 }
+
+// The deprecated namespace aliases (CHANGELOG, Deprecated; removed in 1.0.0) name the same tables until then.
+// The project itself uses odestep::tables; these lines are the aliases' only use, to keep them working.
+static_assert(std::is_same_v<odestep::tableaux::rk4, odestep::tables::rk4>);
+static_assert(std::is_same_v<odestep::adams_tables::bashforth4, odestep::tables::bashforth4>);
+static_assert(std::is_same_v<odestep::splittings::velocity_verlet, odestep::tables::velocity_verlet>);

@@ -15,6 +15,7 @@
 #include "../config.hpp"
 #include "../detail/grid_clock.hpp"
 #include "../detail/ops.hpp"
+#include "../detail/stage_loop.hpp"
 #include "../state.hpp"
 #include "../status.hpp"
 #include "../stepper.hpp"
@@ -44,15 +45,8 @@ struct embedded_pair {
                   "4(5), Cash-Karp 5(4), DP 5(4), RKF 7(8), DOP853)");
     static_assert(is_explicit(tab), "odestep: error-controlled stepping here takes an explicit table");
 
-    /// First same as last: the last stage is f(t + h, y_{n+1}) (its row of a is b, c = 1, b_s = 0), so it
-    /// is the next step's first stage (Dormand-Prince 5(4), Bogacki-Shampine 3(2)).
-    static constexpr bool compute_fsal() noexcept {
-        if (S < 2 || !(tab.c[S - 1] == T(1)) || !(tab.b[S - 1] == T(0))) return false;
-        for (std::size_t j = 0; j + 1 < S; ++j)
-            if (!(tab.a[S - 1][j] == tab.b[j])) return false;
-        return true;
-    }
-    static constexpr bool fsal = compute_fsal();
+    /// First same as last (detail::first_same_as_last): the last stage is the next step's first.
+    static constexpr bool fsal = first_same_as_last(tab);
 
     /// The order of the error estimate, k in err ~ C h^k: the lower order of the pair plus one; for a
     /// table with two estimates (DOP853) Hairer's combined norm, which behaves as h^8 (HNW I, Sec. II.10).
@@ -64,18 +58,19 @@ struct embedded_pair {
     /// at the first stage where f gave NaN or Inf, with no further call of f (a user's f may trap on NaN or
     /// index a table by y), leaving the outputs unspecified. t_end is t + h as the caller has it (the
     /// interval's end, exactly): the stage with c = 1 is evaluated there. Every sum is expanded at compile
-    /// time over the table's non-zero coefficients (a loop over the table at run time cost DOP853 2.3x the
-    /// instructions per step); the terms are added in stage order from 0, as the plain loops would.
+    /// time over the table's non-zero coefficients; the terms are added in stage order from 0, as the plain
+    /// loops would.
     template <class System>
     [[nodiscard]] static bool step(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k, State& y_new,
                                    State& err, State& err2) {
-        if (!stages(f, y, t, h, t_end, k, y_new, std::make_index_sequence<S>{})) return false;
-        ODESTEP_STEP_UNROLL
+        if (!stage_loop::template run<true>(f, y, t, h, t_end, k, y_new, evaluated(std::make_index_sequence<S>{})))
+            return false;
+        ODESTEP_STEP_UNROLL_ALWAYS
         for (std::size_t n = 0; n < N; ++n) {
-            if constexpr (!fsal) y_new[n] = y[n] + h * weighted<b_weights>(k, n, std::make_index_sequence<S>{});
-            err[n] = h * weighted<error_weights<0>>(k, n, std::make_index_sequence<S>{});
+            if constexpr (!next_from_stage) y_new[n] = y[n] + sum_form::template sum<b_weights>(k, n, h);
+            err[n] = sum_form::template sum<error_weights<0>>(k, n, h);
             if constexpr (E >= 2) {
-                err2[n] = h * weighted<error_weights<1>>(k, n, std::make_index_sequence<S>{});
+                err2[n] = sum_form::template sum<error_weights<1>>(k, n, h);
             } else {
                 err2[n] = T(0);
             }
@@ -83,49 +78,19 @@ struct embedded_pair {
         return true;
     }
 
-    // Weight rows as types, so that each weight is a constant expression in `weighted`.
-    template <std::size_t I>
-    using a_row = typename detail::table_rows<Method, T>::template a_row<I>;
+    // The stage loop (detail::explicit_stages) over the stages after the first (given), every sum in stage
+    // order from 0 (detail::ordered_sum).
+    using stage_loop = detail::explicit_stages<Method, State, detail::ordered_sum>;
+    using sum_form = detail::ordered_sum<T, State, S>;
+    template <std::size_t... I>
+    static constexpr auto evaluated(std::index_sequence<I...>) noexcept {
+        return std::integer_sequence<bool, (I != 0)...>{};
+    }
+    // The b row's input is y_{n+1} (for a FSAL table the last stage's), kept there by the stage loop.
+    static constexpr bool next_from_stage = stage_loop::b_row < S;
     using b_weights = typename detail::table_rows<Method, T>::b_weights;
     template <std::size_t Which>
     using error_weights = typename detail::table_rows<Method, T>::template error_weights<Which>;
-
-    // sum_j w_j k_j[n] over the non-zero w_j, from 0 in stage order.
-    template <class W, std::size_t... J>
-    ODESTEP_INLINE static T weighted(const std::array<State, S>& k, std::size_t n, std::index_sequence<J...>) noexcept {
-        T acc = T(0);
-        (add_term<W, J>(acc, k, n), ...);
-        return acc;
-    }
-    template <class W, std::size_t J>
-    ODESTEP_INLINE static void add_term(T& acc, const std::array<State, S>& k, std::size_t n) noexcept {
-        if constexpr (W::value(J) != T(0)) acc += W::value(J) * k[J][n];
-    }
-
-    // The stages in order, stopping at the first that is not finite (&& short-circuits).
-    template <class System, std::size_t... I>
-    ODESTEP_INLINE static bool stages(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k,
-                                      State& y_new, std::index_sequence<I...>) {
-        return (stage<I>(f, y, t, h, t_end, k, y_new) && ...);
-    }
-    // k_I = f(t + c_I h, y + h sum_{j<I} a_Ij k_j), for I >= 1 (k_0 is given); false when it is not finite.
-    // The FSAL stage's input is y_{n+1} itself, kept as the new state.
-    template <std::size_t I, class System>
-    ODESTEP_INLINE static bool stage(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k,
-                                     State& y_new) {
-        if constexpr (I == 0) {
-            return true;
-        } else {
-            State input;
-            State& in = fsal && I + 1 == S ? y_new : input;
-            ODESTEP_STEP_UNROLL
-            for (std::size_t n = 0; n < N; ++n)
-                in[n] = y[n] + h * weighted<a_row<I>>(k, n, std::make_index_sequence<I>{});
-            const T ti = tab.c[I] == T(1) ? t_end : t + tab.c[I] * h;
-            detail::evaluate(f, ti, static_cast<const State&>(in), k[I]);
-            return detail::all_finite(k[I]);
-        }
-    }
 
     /// The norm the controller sees: the scaled RMS norm of err; with two estimates (DOP853) Hairer's
     /// combination e5^2 / sqrt(e5^2 + 0.01 e3^2) of the two norms (DOP853's ERR/DENO, HNW I, Sec. II.10).

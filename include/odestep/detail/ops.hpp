@@ -78,7 +78,7 @@ ODESTEP_INLINE constexpr bool each_finite(const std::array<T, N>& y) noexcept {
 /// sum += every component of y (or y itself, a scalar that belongs to the test).
 template <class T, std::size_t N>
 ODESTEP_INLINE constexpr void add_components(T& sum, const std::array<T, N>& y) noexcept {
-    ODESTEP_UNROLL
+    ODESTEP_UNROLL_UNLESS_SIZE
     for (std::size_t n = 0; n < N; ++n) sum += y[n];
 }
 template <class T>
@@ -98,7 +98,7 @@ ODESTEP_INLINE constexpr bool each_finite(T y) noexcept {
 template <class T, std::size_t N, class... More>
 ODESTEP_INLINE constexpr bool all_finite(const std::array<T, N>& y, const More&... more) noexcept {
     T sum = y[0];
-    ODESTEP_UNROLL
+    ODESTEP_UNROLL_UNLESS_SIZE
     for (std::size_t n = 1; n < N; ++n) sum += y[n];
     (add_components(sum, more), ...);
     return finite_sum(sum) || (each_finite(y) && (each_finite(more) && ...));
@@ -155,7 +155,7 @@ ODESTEP_INLINE constexpr void assign(std::array<T, N>& to, const std::array<T, N
     if constexpr (Form == copy_form::block_at_size && optimizing_for_size && N > 2) {
         to = from;
     } else {
-        ODESTEP_UNROLL
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t n = 0; n < N; ++n) to[n] = from[n];
     }
 }
@@ -164,7 +164,7 @@ ODESTEP_INLINE constexpr void assign(std::array<T, N>& to, const std::array<T, N
 template <class T, std::size_t N>
 constexpr std::array<T, N> plus_scaled(const std::array<T, N>& x, T c, const std::array<T, N>& v) noexcept {
     std::array<T, N> out;
-    ODESTEP_UNROLL
+    ODESTEP_UNROLL_UNLESS_SIZE
     for (std::size_t n = 0; n < N; ++n) out[n] = x[n] + c * v[n];
     return out;
 }

@@ -151,6 +151,31 @@ constexpr bool is_symmetric(const butcher_tableau<T, S, E>& tab) noexcept {
 
 namespace detail {
 
+/// Row i of a is b (the entries a_ij for j >= i read as zero, so b_j = 0 there): stage i's input is
+/// y_{n+1} itself, the same sum in the same order.
+template <class T, std::size_t S, std::size_t E>
+constexpr bool is_b_row(const butcher_tableau<T, S, E>& tab, std::size_t i) noexcept {
+    for (std::size_t j = 0; j < S; ++j)
+        if (!((j < i ? tab.a[i][j] : T(0)) == tab.b[j])) return false;
+    return true;
+}
+
+/// The first stage i >= 1 whose row of a is b (is_b_row), S if none: the one first-same-as-last detector.
+/// A step that evaluates that stage keeps its input as the new state (Dormand-Prince 5(4)'s seventh).
+template <class T, std::size_t S, std::size_t E>
+constexpr std::size_t b_row(const butcher_tableau<T, S, E>& tab) noexcept {
+    for (std::size_t i = 1; i < S; ++i)
+        if (is_b_row(tab, i)) return i;
+    return S;
+}
+
+/// First same as last: the last stage is f(t + h, y_{n+1}) (its row of a is b, c = 1, b_s = 0), so it is
+/// the next step's first stage (Dormand-Prince 5(4), Bogacki-Shampine 3(2)).
+template <class T, std::size_t S, std::size_t E>
+constexpr bool first_same_as_last(const butcher_tableau<T, S, E>& tab) noexcept {
+    return S >= 2 && tab.c[S - 1] == T(1) && is_b_row(tab, S - 1);
+}
+
 /// A Butcher table's rows as types, so that each coefficient is a constant expression inside the steppers'
 /// sums expanded at compile time (explicit_rk and the adaptive engine's embedded pair):
 /// a_row<I>::value(j) = a_Ij (0 for j >= I), b_weights::value(j) = b_j, error_weights<E>::value(j) =
