@@ -6,6 +6,7 @@
 #include <odestep/adaptive.hpp>
 #include <odestep/integrate.hpp>
 #include <odestep/rk/explicit_rk.hpp>
+#include <odestep/stiff/integrate.hpp>
 
 #include <array>
 #include <cmath>
@@ -233,8 +234,9 @@ struct decay1 {
 }  // namespace
 
 TEST_CASE("an empty run (t0 == t1) with a NaN y0: the adaptive loops do what integrate() does") {
-    // The reference is integrate() itself (include/odestep/integrate.hpp: run_grid over a plan of zero steps):
-    // ok, y0 observed once at t0, nothing evaluated, y0 untouched. A run checks only what it computes.
+    // The reference is integrate() itself (include/odestep/integrate.hpp: run_grid over a plan of zero steps,
+    // the empty-run rule of docs/reference.md): non_finite, y0 observed once at t0, nothing evaluated, y0
+    // untouched. So ok always means a finite state.
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const auto run = [&](auto&& call) {
         std::size_t calls = 0;
@@ -251,7 +253,7 @@ TEST_CASE("an empty run (t0 == t1) with a NaN y0: the adaptive loops do what int
     const empty_outcome grid = run([](auto& f, state1& y, const auto& observe) {
         return odestep::integrate(odestep::rk4<state1>{}, f, y, 2.0, 2.0, 0.1, observe).status;
     });
-    CHECK(grid.s == status::ok);
+    CHECK(grid.s == status::non_finite);
     CHECK(grid.observed == 1);
     CHECK(grid.calls == 0);
     CHECK(grid.y_is_nan);
@@ -268,11 +270,31 @@ TEST_CASE("an empty run (t0 == t1) with a NaN y0: the adaptive loops do what int
         const std::array<double, 1> at{2.0};
         return odestep::integrate_times(e, f, y, 2.0, at, observe).status;
     });
-    for (const empty_outcome& o : {substeps, adaptive, times}) {
+    const empty_outcome radau = run([](auto& f, state1& y, const auto& observe) {
+        odestep::radau5<state1> e;
+        return odestep::integrate_adaptive(e, f, y, 2.0, 2.0, observe).status;
+    });
+    const empty_outcome radau_times = run([](auto& f, state1& y, const auto& observe) {
+        odestep::radau5<state1> e;
+        const std::array<double, 1> at{2.0};
+        return odestep::integrate_times(e, f, y, 2.0, at, observe).status;
+    });
+    for (const empty_outcome& o : {substeps, adaptive, times, radau, radau_times}) {
         CHECK(o.s == grid.s);
         CHECK(o.observed == grid.observed);
         CHECK(o.calls == grid.calls);
         CHECK(o.y_is_nan == grid.y_is_nan);
+    }
+    // The solution object and the sampler: the same rule (nothing stored past y0, nothing handed out).
+    {
+        state1 y{nan};
+        static odestep::solution<odestep::tables::dormand_prince54, state1, 4> sol;
+        odestep::adaptive_rk<odestep::tables::dormand_prince54, state1> e;
+        CHECK(odestep::integrate_adaptive(e, decay1{}, y, 2.0, 2.0, sol).status == status::non_finite);
+        odestep::adaptive_sampler<odestep::tables::dormand_prince54, state1> run_at(e, 2.0, y, 2.0);
+        state1 u{7.0};
+        CHECK(run_at.advance_to(decay1{}, 2.0, u) == status::non_finite);
+        CHECK(u[0] == 7.0);
     }
     // A step is not a run: adaptive_substeps::step over an interval that rounding empties (t + dt == t, dt not
     // zero) reports non_finite for a NaN y, as a step that evaluates f at y does (rk4's step with that dt;

@@ -34,6 +34,56 @@ constexpr status check_span(T t0, T t1) noexcept {
     if (!is_finite(t0) || !is_finite(t1) || !is_finite(t1 - t0)) return status::invalid_time;
     return status::ok;
 }
+
+// THE free-running loop, for every engine with settings_status() and attempt(f, t, y, t_end, accepted)
+// (adaptive_rk, and the stiff engines of stiff/): observe (t0, y), then attempts until t1 or the cap. An empty
+// run (t0 == t1) ends as integrate()'s does (integrate.hpp, run_grid): ok if y is finite, else non_finite at t0.
+template <class Engine, class State, class System, class Observer>
+integrate_result<value_type_t<State>> free_running(Engine& engine, System& f, State& y, value_type_t<State> t0,
+                                                   value_type_t<State> t1, Observer& observe, step_count max_attempts) {
+    using T = value_type_t<State>;
+    status s = engine.settings_status();
+    if (s == status::ok && max_attempts == 0) s = status::invalid_setting;
+    if (s == status::ok) s = check_span(t0, t1);
+    if (s != status::ok) return {s, t0, 0};
+    observe(t0, static_cast<const State&>(y));
+    if (t0 == t1 && !all_finite(y)) return {status::non_finite, t0, 0};
+    T t = t0;
+    step_count accepted = 0;
+    for (step_count n = 0; n < max_attempts && t != t1; ++n) {
+        bool ok = false;
+        s = engine.attempt(f, t, y, t1, ok);
+        if (s != status::ok) return {s, t, accepted};
+        if (ok) {
+            ++accepted;
+            observe(t, static_cast<const State&>(y));
+        }
+    }
+    if (t != t1) return {status::substep_limit, t, accepted};
+    return {status::ok, t, accepted};
+}
+
+// What integrate_times checks before anything is evaluated (the same for every engine): the settings, the cap,
+// t0, and the times (finite, in the run's direction, never going back). ok with t1 the last time; with no
+// times, ok and `empty` set.
+template <class Engine, class T, class Times>
+status check_times(const Engine& engine, T t0, const Times& times, step_count max_attempts, T& t1) noexcept {
+    status s = engine.settings_status();
+    if (s == status::ok && max_attempts == 0) s = status::invalid_setting;
+    if (s == status::ok && !is_finite(t0)) s = status::invalid_time;
+    const std::size_t count = times.size();
+    if (s != status::ok || count == 0) return s;
+    t1 = times[count - 1];
+    if (check_span(t0, t1) != status::ok) return status::invalid_time;
+    const bool forward = !(t1 < t0);
+    T previous = t0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const T ti = times[i];
+        if (!is_finite(ti) || (forward ? ti < previous : ti > previous)) return status::invalid_time;
+        previous = ti;
+    }
+    return status::ok;
+}
 }  // namespace detail
 
 /// Integrates y' = f(t, y) from t0 to exactly t1 with the error-controlled steps of `engine`
@@ -53,25 +103,7 @@ template <class Method, class State, class System, class Observer,
                                                                        State& y, detail::time_t_of<State> t0,
                                                                        detail::time_t_of<State> t1, Observer&& observe,
                                                                        step_count max_attempts = default_max_attempts) {
-    using T = value_type_t<State>;
-    status s = engine.settings_status();
-    if (s == status::ok && max_attempts == 0) s = status::invalid_setting;
-    if (s == status::ok) s = detail::check_span(t0, t1);
-    if (s != status::ok) return {s, t0, 0};
-    observe(t0, static_cast<const State&>(y));
-    T t = t0;
-    step_count accepted = 0;
-    for (step_count n = 0; n < max_attempts && t != t1; ++n) {
-        bool ok = false;
-        s = engine.attempt(f, t, y, t1, ok);
-        if (s != status::ok) return {s, t, accepted};
-        if (ok) {
-            ++accepted;
-            observe(t, static_cast<const State&>(y));
-        }
-    }
-    if (t != t1) return {status::substep_limit, t, accepted};
-    return {status::ok, t, accepted};
+    return detail::free_running(engine, f, y, t0, t1, observe, max_attempts);
 }
 
 /// integrate_adaptive without an observer.
@@ -105,21 +137,13 @@ template <class Method, class State, class System, class Times, class Observer>
                                                                     step_count max_attempts = default_max_attempts) {
     using T = value_type_t<State>;
     const std::size_t count = times.size();
-    status s = engine.settings_status();
-    if (s == status::ok && max_attempts == 0) s = status::invalid_setting;
-    if (s == status::ok && !detail::is_finite(t0)) s = status::invalid_time;
+    T t1 = t0;
+    status s = detail::check_times(engine, t0, times, max_attempts, t1);
     if (s != status::ok || count == 0) return {s, t0, 0};
-    const T t1 = times[count - 1];
-    if (detail::check_span(t0, t1) != status::ok) return {status::invalid_time, t0, 0};
     const bool forward = !(t1 < t0);
-    T previous = t0;
-    for (std::size_t i = 0; i < count; ++i) {
-        const T ti = times[i];
-        if (!detail::is_finite(ti) || (forward ? ti < previous : ti > previous)) return {status::invalid_time, t0, 0};
-        previous = ti;
-    }
     std::size_t next = 0;
     while (next < count && times[next] == t0) observe(times[next++], static_cast<const State&>(y));
+    if (next == count && !detail::all_finite(y)) return {status::non_finite, t0, 0};  // an empty run
     dense_step<Method, State> dense;
     State u;
     T t = t0;

@@ -141,6 +141,7 @@ template <class Method, class State, std::size_t Capacity, class System>
     if (s == status::ok) s = detail::check_span(t0, t1);
     if (s != status::ok) return {s, t0, 0};
     sol.start(t0, y);
+    if (t0 == t1 && !detail::all_finite(y)) return {status::non_finite, t0, 0};  // an empty run, as integrate()
     dense_step<Method, State> dense;
     T t = t0;
     step_count accepted = 0;
@@ -201,6 +202,8 @@ public:
         last_out_ = t_out;
         for (step_count n = 0;; ++n) {
             if (t_out == t_) {  // the run's own state: t0, or a step's end
+                // Only y0 can be non-finite here (a step's end always is finite): as integrate()'s empty run.
+                if (!detail::all_finite(y_)) return status::non_finite;
                 detail::assign(y_out, y_);
                 return status::ok;
             }

@@ -18,34 +18,6 @@
 
 namespace odestep {
 
-namespace detail {
-// The free-running loop of integrate_adaptive for a stiff engine (odestep::radau5, odestep::rosenbrock_adaptive).
-template <class Engine, class State, class System, class Observer>
-integrate_result<value_type_t<State>> stiff_adaptive_loop(Engine& engine, System& f, State& y, value_type_t<State> t0,
-                                                          value_type_t<State> t1, Observer& observe,
-                                                          step_count max_attempts) {
-    using T = value_type_t<State>;
-    status s = engine.settings_status();
-    if (s == status::ok && max_attempts == 0) s = status::invalid_setting;
-    if (s == status::ok) s = detail::check_span(t0, t1);
-    if (s != status::ok) return {s, t0, 0};
-    observe(t0, static_cast<const State&>(y));
-    T t = t0;
-    step_count accepted = 0;
-    for (step_count n = 0; n < max_attempts && t != t1; ++n) {
-        bool ok = false;
-        s = engine.attempt(f, t, y, t1, ok);
-        if (s != status::ok) return {s, t, accepted};
-        if (ok) {
-            ++accepted;
-            observe(t, static_cast<const State&>(y));
-        }
-    }
-    if (t != t1) return {status::substep_limit, t, accepted};
-    return {status::ok, t, accepted};
-}
-}  // namespace detail
-
 /// Integrates y' = f(t, y) from t0 to exactly t1 with the error-controlled Radau IIA 5 steps of `engine`
 /// (odestep::radau5: its tolerances, controller, and what it carries), and calls observe(t, y) with the
 /// initial state and after every accepted step. The result's `steps` counts the accepted steps.
@@ -61,7 +33,7 @@ template <class State, class System, class Observer,
                                                                        detail::time_t_of<State> t0,
                                                                        detail::time_t_of<State> t1, Observer&& observe,
                                                                        step_count max_attempts = default_max_attempts) {
-    return detail::stiff_adaptive_loop(engine, f, y, t0, t1, observe, max_attempts);
+    return detail::free_running(engine, f, y, t0, t1, observe, max_attempts);
 }
 
 /// integrate_adaptive with the Radau IIA 5 engine, without an observer.
@@ -83,7 +55,7 @@ template <class Method, class State, class System, class Observer,
                                                                        detail::time_t_of<State> t0,
                                                                        detail::time_t_of<State> t1, Observer&& observe,
                                                                        step_count max_attempts = default_max_attempts) {
-    return detail::stiff_adaptive_loop(engine, f, y, t0, t1, observe, max_attempts);
+    return detail::free_running(engine, f, y, t0, t1, observe, max_attempts);
 }
 
 /// integrate_adaptive with a Rosenbrock pair, without an observer.
@@ -114,21 +86,13 @@ template <class State, class System, class Times, class Observer>
                                                                     step_count max_attempts = default_max_attempts) {
     using T = value_type_t<State>;
     const std::size_t count = times.size();
-    status s = engine.settings_status();
-    if (s == status::ok && max_attempts == 0) s = status::invalid_setting;
-    if (s == status::ok && !detail::is_finite(t0)) s = status::invalid_time;
+    T t1 = t0;
+    status s = detail::check_times(engine, t0, times, max_attempts, t1);
     if (s != status::ok || count == 0) return {s, t0, 0};
-    const T t1 = times[count - 1];
-    if (detail::check_span(t0, t1) != status::ok) return {status::invalid_time, t0, 0};
     const bool forward = !(t1 < t0);
-    T previous = t0;
-    for (std::size_t i = 0; i < count; ++i) {
-        const T ti = times[i];
-        if (!detail::is_finite(ti) || (forward ? ti < previous : ti > previous)) return {status::invalid_time, t0, 0};
-        previous = ti;
-    }
     std::size_t next = 0;
     while (next < count && times[next] == t0) observe(times[next++], static_cast<const State&>(y));
+    if (next == count && !detail::all_finite(y)) return {status::non_finite, t0, 0};  // an empty run
     radau5_dense<State> dense;
     State u;
     T t = t0;
