@@ -39,6 +39,9 @@ fi
 
 passed=0 failed=0 failures=()
 total_start=$SECONDS
+# The test command leaves the work tree as it found it (build/ aside): its state now, compared at the end.
+mkdir -p build
+scripts/check_clean_tree.sh --save build/work_tree_before.txt
 run() {  # run NAME COMMAND...
   local name=$1; shift
   local start=$SECONDS
@@ -85,6 +88,7 @@ else
   # Instruction counts are deterministic: RK4 on Lorenz must stay within 1.05x a hand-written loop at -O2.
   run bench-quick scripts/bench.sh --quick
 fi
+run clean-tree scripts/check_clean_tree.sh --check build/work_tree_before.txt
 
 echo
 echo "test ($tier): $((SECONDS - total_start)) s"
