@@ -75,10 +75,9 @@ for preset in "${presets[@]}"; do
   [[ "$result" == ok ]] || continue
   if is_build_only "$preset"; then
     result_of[$preset]="ok (built only)"
-    image=build/$preset/tests/odestep_target_tests.elf
-    if [[ -f "$image" ]] && command -v arm-none-eabi-size > /dev/null 2>&1; then
-      echo "=== ${preset}: size of the test image (not run: no QEMU board)"
-      arm-none-eabi-size "$image"
+    if command -v arm-none-eabi-size > /dev/null 2>&1; then
+      echo "=== ${preset}: size of the test images (not run: no QEMU board)"
+      arm-none-eabi-size build/"$preset"/tests/odestep_target_tests_*.elf
     fi
     continue
   fi
