@@ -328,6 +328,34 @@ private:
     step_count rejected_ = 0;
 };
 
+namespace detail {
+// THE interval covered by error-controlled substeps, for adaptive_substeps and the stiff engines' substep form
+// (stiff/substeps.hpp): y <- y(t + dt) in at most max_attempts attempts of `engine`, the last landing exactly on
+// t + dt; on any status but ok y is the state it was given. The settings were checked by the caller.
+template <class Engine, class System, class State, class T>
+status cover_interval(Engine& engine, System& f, State& y, T t, T dt, std::size_t max_attempts) {
+    if (!is_finite(t)) return status::invalid_time;
+    if (!is_finite(dt) || dt == T(0)) return status::invalid_step;
+    const T t_end = t + dt;
+    if (!is_finite(t_end)) return status::invalid_time;
+    // dt below the rounding of t: the interval is empty and y(t + dt) is y, evaluated nowhere; ok only for
+    // a finite y, as a step that evaluates f at y would find.
+    if (t_end == t) return all_finite(y) ? status::ok : status::non_finite;
+    const State start = y;
+    T tc = t;
+    status s = status::ok;
+    for (std::size_t n = 0; n < max_attempts; ++n) {
+        bool accepted = false;
+        s = engine.attempt(f, tc, y, t_end, accepted);
+        if (s != status::ok) break;
+        if (accepted && tc == t_end) return status::ok;
+    }
+    if (s == status::ok) s = status::substep_limit;
+    assign(y, start);
+    return s;
+}
+}  // namespace detail
+
 /// \brief The course's adaptive solver: a stepper that looks like a fixed-step one.
 ///
 /// `step(f, y, t, dt)` covers one interval of the caller's grid, [t, t + dt], with as many error-controlled
@@ -403,26 +431,9 @@ public:
     /// t + dt not finite), invalid_step (dt zero or not finite), non_finite, step_too_small, substep_limit.
     template <class System>
     [[nodiscard]] status step(System&& f, State& y, T t, T dt) {
-        status s = settings_status();
+        const status s = settings_status();
         if (s != status::ok) return s;
-        if (!detail::is_finite(t)) return status::invalid_time;
-        if (!detail::is_finite(dt) || dt == T(0)) return status::invalid_step;
-        const T t_end = t + dt;
-        if (!detail::is_finite(t_end)) return status::invalid_time;
-        // dt below the rounding of t: the interval is empty and y(t + dt) is y, evaluated nowhere; ok only for
-        // a finite y, as a step that evaluates f at y would find.
-        if (t_end == t) return detail::all_finite(y) ? status::ok : status::non_finite;
-        const State start = y;
-        T tc = t;
-        for (std::size_t n = 0; n < max_substeps_; ++n) {
-            bool accepted = false;
-            s = engine_.attempt(f, tc, y, t_end, accepted);
-            if (s != status::ok) break;
-            if (accepted && tc == t_end) return status::ok;
-        }
-        if (s == status::ok) s = status::substep_limit;
-        detail::assign(y, start);
-        return s;
+        return detail::cover_interval(engine_, f, y, t, dt, max_substeps_);
     }
 
 private:

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 
+#include "../adaptive/adaptive_rk.hpp"
 #include "../adaptive/control.hpp"
 #include "../detail/ops.hpp"
 #include "../state.hpp"
@@ -100,24 +101,9 @@ public:
     /// not finite), non_finite, singular_matrix, step_too_small, substep_limit (the attempt cap).
     template <class System>
     [[nodiscard]] status step(System&& f, State& y, T t, T dt) {
-        status s = settings_status();
+        const status s = settings_status();
         if (s != status::ok) return s;
-        if (!detail::is_finite(t)) return status::invalid_time;
-        if (!detail::is_finite(dt) || dt == T(0)) return status::invalid_step;
-        const T t_end = t + dt;
-        if (!detail::is_finite(t_end)) return status::invalid_time;
-        if (t_end == t) return detail::all_finite(y) ? status::ok : status::non_finite;
-        const State start = y;
-        T tc = t;
-        for (std::size_t n = 0; n < max_attempts_; ++n) {
-            bool accepted = false;
-            s = engine_.attempt(f, tc, y, t_end, accepted);
-            if (s != status::ok) break;
-            if (accepted && tc == t_end) return status::ok;
-        }
-        if (s == status::ok) s = status::substep_limit;
-        detail::assign(y, start);
-        return s;
+        return detail::cover_interval(engine_, f, y, t, dt, max_attempts_);
     }
 
 private:
