@@ -84,6 +84,49 @@ status check_times(const Engine& engine, T t0, const Times& times, step_count ma
     }
     return status::ok;
 }
+
+// THE loop of integrate_times, for every engine with attempt(f, t, y, t_end, accepted, dense): the steps are
+// integrate_adaptive's, and each output time inside an accepted step comes from `dense` once complete() (the
+// engine's extension: more evaluations for some pairs, none for Radau's polynomial) has returned ok.
+template <class Engine, class System, class State, class Times, class Observer, class Dense, class Complete>
+integrate_result<value_type_t<State>> sampled_run(Engine& engine, System& f, State& y, value_type_t<State> t0,
+                                                  const Times& times, Observer& observe, step_count max_attempts,
+                                                  Dense& dense, Complete&& complete) {
+    using T = value_type_t<State>;
+    const std::size_t count = times.size();
+    T t1 = t0;
+    status s = detail::check_times(engine, t0, times, max_attempts, t1);
+    if (s != status::ok || count == 0) return {s, t0, 0};
+    const bool forward = !(t1 < t0);
+    std::size_t next = 0;
+    while (next < count && times[next] == t0) observe(times[next++], static_cast<const State&>(y));
+    if (next == count && !detail::all_finite(y)) return {status::non_finite, t0, 0};  // an empty run
+    State u;
+    T t = t0;
+    step_count accepted = 0;
+    for (step_count n = 0; n < max_attempts && next < count; ++n) {
+        bool ok = false;
+        s = engine.attempt(f, t, y, t1, ok, dense);
+        if (s != status::ok) return {s, t, accepted};
+        if (!ok) continue;
+        ++accepted;
+        // Every time inside the step: interpolated; a time on its end: the step's own state.
+        const auto inside = [&](T ti) { return forward ? ti < t : ti > t; };
+        if (next < count && inside(times[next])) {
+            s = complete();
+            if (s != status::ok) return {s, t, accepted};
+            for (; next < count && inside(times[next]); ++next) {
+                dense.at(times[next], u);
+                // The interpolant of a finite step can still overflow between its ends (huge states).
+                if (!detail::all_finite(u)) return {status::non_finite, t, accepted};
+                observe(times[next], static_cast<const State&>(u));
+            }
+        }
+        while (next < count && times[next] == t) observe(times[next++], static_cast<const State&>(y));
+    }
+    if (next < count) return {status::substep_limit, t, accepted};
+    return {status::ok, t, accepted};
+}
 }  // namespace detail
 
 /// Integrates y' = f(t, y) from t0 to exactly t1 with the error-controlled steps of `engine`
@@ -135,41 +178,9 @@ template <class Method, class State, class System, class Times, class Observer>
                                                                     State& y, detail::time_t_of<State> t0,
                                                                     const Times& times, Observer&& observe,
                                                                     step_count max_attempts = default_max_attempts) {
-    using T = value_type_t<State>;
-    const std::size_t count = times.size();
-    T t1 = t0;
-    status s = detail::check_times(engine, t0, times, max_attempts, t1);
-    if (s != status::ok || count == 0) return {s, t0, 0};
-    const bool forward = !(t1 < t0);
-    std::size_t next = 0;
-    while (next < count && times[next] == t0) observe(times[next++], static_cast<const State&>(y));
-    if (next == count && !detail::all_finite(y)) return {status::non_finite, t0, 0};  // an empty run
     dense_step<Method, State> dense;
-    State u;
-    T t = t0;
-    step_count accepted = 0;
-    for (step_count n = 0; n < max_attempts && next < count; ++n) {
-        bool ok = false;
-        s = engine.attempt(f, t, y, t1, ok, dense);
-        if (s != status::ok) return {s, t, accepted};
-        if (!ok) continue;
-        ++accepted;
-        // Every time inside the step: interpolated; a time on its end: the step's own state.
-        const auto inside = [&](T ti) { return forward ? ti < t : ti > t; };
-        if (next < count && inside(times[next])) {
-            s = dense.complete(f, engine);
-            if (s != status::ok) return {s, t, accepted};
-            for (; next < count && inside(times[next]); ++next) {
-                dense.at(times[next], u);
-                // The interpolant of a finite step can still overflow between its ends (huge states).
-                if (!detail::all_finite(u)) return {status::non_finite, t, accepted};
-                observe(times[next], static_cast<const State&>(u));
-            }
-        }
-        while (next < count && times[next] == t) observe(times[next++], static_cast<const State&>(y));
-    }
-    if (next < count) return {status::substep_limit, t, accepted};
-    return {status::ok, t, accepted};
+    return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense,
+                               [&] { return dense.complete(f, engine); });
 }
 
 }  // namespace odestep

@@ -84,35 +84,8 @@ template <class State, class System, class Times, class Observer>
                                                                     detail::time_t_of<State> t0, const Times& times,
                                                                     Observer&& observe,
                                                                     step_count max_attempts = default_max_attempts) {
-    using T = value_type_t<State>;
-    const std::size_t count = times.size();
-    T t1 = t0;
-    status s = detail::check_times(engine, t0, times, max_attempts, t1);
-    if (s != status::ok || count == 0) return {s, t0, 0};
-    const bool forward = !(t1 < t0);
-    std::size_t next = 0;
-    while (next < count && times[next] == t0) observe(times[next++], static_cast<const State&>(y));
-    if (next == count && !detail::all_finite(y)) return {status::non_finite, t0, 0};  // an empty run
     radau5_dense<State> dense;
-    State u;
-    T t = t0;
-    step_count accepted = 0;
-    for (step_count n = 0; n < max_attempts && next < count; ++n) {
-        bool ok = false;
-        s = engine.attempt(f, t, y, t1, ok, dense);
-        if (s != status::ok) return {s, t, accepted};
-        if (!ok) continue;
-        ++accepted;
-        const auto inside = [&](T ti) { return forward ? ti < t : ti > t; };
-        for (; next < count && inside(times[next]); ++next) {
-            dense.at(times[next], u);
-            if (!detail::all_finite(u)) return {status::non_finite, t, accepted};
-            observe(times[next], static_cast<const State&>(u));
-        }
-        while (next < count && times[next] == t) observe(times[next++], static_cast<const State&>(y));
-    }
-    if (next < count) return {status::substep_limit, t, accepted};
-    return {status::ok, t, accepted};
+    return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense, [] { return status::ok; });
 }
 
 }  // namespace odestep
