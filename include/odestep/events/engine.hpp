@@ -399,7 +399,7 @@ private:
     }
 
     // (Folds over compile-time indices, not for_each's lambdas, here and in remember: at -Os GCC left each
-    // lambda a call with its closure built on the stack, 2.1x the bare step's instructions per quiet tick.
+    // lambda a call with its closure built on the stack, on the quiet tick's path.
     // g then stays in registers.)
     template <std::size_t... I>
     ODESTEP_INLINE bool same_sides(const values& g, std::index_sequence<I...>) const {
@@ -441,7 +441,7 @@ private:
     }
     // detail::all_finite, which is always inlined (the steppers' hot paths), behind a call the compiler may
     // keep out of line: these are the event loop's rare paths, and at -Os one shared copy is the smaller
-    // (inlined everywhere, the M4F float -Os event tick was 38 bytes larger).
+    // (inlined everywhere, the M4F float -Os event tick is larger).
     template <class A>
     static bool finite_values(const A& a) noexcept {
         return all_finite(a);

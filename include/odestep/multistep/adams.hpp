@@ -168,8 +168,7 @@ private:
     // dt times each weight, the predictor's then the corrector's, for the history's dt: set when the history
     // starts, as every later step has the same dt (the grid check; exact comparison, under which -0 equals
     // +0, so a history of steps of zero may form 0 * f_j with the other zero's sign). The product, once per
-    // history instead of once per weight and step (x86-64 instructions a step, Lorenz AB4 / ABM4: -O2 111.1
-    // / 173.9 -> 110.1 / 162.9, -Os 112.4 / 174.2 -> 108.4 / 161.3).
+    // history instead of once per weight and step (docs/performance.md has the figures).
     std::array<T, pece ? 2 * K : K> scaled_{};
 
     // Weight rows as types, so each weight is a constant expression inside `combine`. Index 0 is the
@@ -193,11 +192,10 @@ private:
 
     // out = y + sum_j (dt w_j) v_j with v_0 = first, v_1 = second (if W reads it there) and the history.
     // The weights and the sources are expanded at compile time at every -O, -Os included (there, as loops,
-    // the arrays of weights and of pointers were built at run time: together with the grid check and the
-    // out-of-line start, x86-64 Lorenz AB4 went from 289 to 155 instructions a step), so each weight is
+    // the arrays of weights and of pointers were built at run time), so each weight is
     // read from scaled_ and the history through K - 1 pointers chosen once per step; the loop over the
     // components is unrolled at every -O (ODESTEP_STEP_UNROLL; rolled at -Os, with the right-hand side called
-    // out of line, Lorenz AB4 took 154 instructions a step against 108 now).
+    // out of line: docs/performance.md).
     template <class W>
     ODESTEP_INLINE void combine(State& out, const State& y, const State& first, const State& second) const noexcept {
         combine_terms<W>(out, y, first, second, std::make_index_sequence<W::size - 1>{});
