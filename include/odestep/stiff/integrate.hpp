@@ -15,6 +15,7 @@
 #include "../status.hpp"
 #include "radau5.hpp"
 #include "rosenbrock_adaptive.hpp"
+#include "sdirk_adaptive.hpp"
 
 namespace odestep {
 
@@ -69,6 +70,29 @@ template <class Method, class State, class System>
     return integrate_adaptive(engine, f, y, t0, t1, none, max_attempts);
 }
 
+/// integrate_adaptive with an SDIRK pair (odestep::sdirk_adaptive): the same contract as with the Radau IIA 5
+/// engine, at most 1 + rhs_evals_to_start + max_attempts * rhs_evals_per_attempt evaluations of f.
+template <class Method, class State, class System, class Observer,
+          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>>, int> = 0>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(sdirk_adaptive<Method, State>& engine,
+                                                                       System&& f, State& y,
+                                                                       detail::time_t_of<State> t0,
+                                                                       detail::time_t_of<State> t1, Observer&& observe,
+                                                                       step_count max_attempts = default_max_attempts) {
+    return detail::free_running(engine, f, y, t0, t1, observe, max_attempts);
+}
+
+/// integrate_adaptive with an SDIRK pair, without an observer.
+template <class Method, class State, class System>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(sdirk_adaptive<Method, State>& engine,
+                                                                       System&& f, State& y,
+                                                                       detail::time_t_of<State> t0,
+                                                                       detail::time_t_of<State> t1,
+                                                                       step_count max_attempts = default_max_attempts) {
+    detail::no_observer none;
+    return integrate_adaptive(engine, f, y, t0, t1, none, max_attempts);
+}
+
 /// Integrates from t0 to the last of `times` (a container of T with size() and operator[], in the direction
 /// of the run and never going back) with the engine's free-running steps, and calls observe(times[i], u) with
 /// the state at every times[i]: from the step's collocation polynomial (odestep::radau5_dense, no extra
@@ -85,6 +109,18 @@ template <class State, class System, class Times, class Observer>
                                                                     Observer&& observe,
                                                                     step_count max_attempts = default_max_attempts) {
     radau5_dense<State> dense;
+    return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense, [] { return status::ok; });
+}
+
+/// integrate_times with an SDIRK pair (odestep::sdirk_adaptive): the same contract as with the Radau IIA 5
+/// engine; the state inside a step is the cubic Hermite interpolant of the step's ends and slopes
+/// (odestep::sdirk_dense, order 3, no extra evaluation of f).
+template <class Method, class State, class System, class Times, class Observer>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_times(sdirk_adaptive<Method, State>& engine, System&& f,
+                                                                    State& y, detail::time_t_of<State> t0,
+                                                                    const Times& times, Observer&& observe,
+                                                                    step_count max_attempts = default_max_attempts) {
+    sdirk_dense<State> dense;
     return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense, [] { return status::ok; });
 }
 

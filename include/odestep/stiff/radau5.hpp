@@ -17,12 +17,23 @@
 #include "../linalg/complex_lu.hpp"
 #include "../linalg/jacobian.hpp"
 #include "../linalg/lu.hpp"
+#include "../rk/newton.hpp"
 #include "../state.hpp"
 #include "../status.hpp"
 #include "../system.hpp"
 #include "../tables/implicit_rk.hpp"
 
 namespace odestep {
+
+namespace detail {
+/// The time a stiff engine stopped at, as a caller's grid gives it back: equal within a few rounding errors
+/// (t0 + n dt against the engine's t + dt), so a call on the next interval continues with what it carries.
+template <class T>
+bool same_point_time(T a, T b) noexcept {
+    const T d = abs_value(a - b);
+    return d <= T(4) * std::numeric_limits<T>::epsilon() * (abs_value(a) + abs_value(b));
+}
+}  // namespace detail
 
 /// RADAU5's step-size controller settings as a step_control: safety 0.9, a step shrinks at most to 0.2 and
 /// grows at most 8 times at once (radau5.f's defaults WORK(2), WORK(8), WORK(9)); alpha and beta are not
@@ -300,13 +311,9 @@ public:
         const T betan = co::beta / h;
         const T eps = std::numeric_limits<T>::epsilon();
         const T stage_time[3] = {t + tab.c[0] * h, t + tab.c[1] * h, last ? t_end : t + h};
-        T faccon = std::pow(detail::max_value(faccon_, eps), T(4) / T(5));
-        T theta = theta_keep_;
-        T dynold = T(0);
-        T thqold = T(0);
-        std::size_t newt = 0;
+        detail::theta_monitor<T> newton(faccon_, theta_keep_, fnewt_, max_newton_iterations);
         for (;;) {
-            if (newt >= max_newton_iterations) return retry_smaller(h, status::ok);
+            if (newton.iterations() >= max_newton_iterations) return retry_smaller(h, status::ok);
             std::array<State, 3> fz;
             for (std::size_t i = 0; i < 3; ++i) {
                 State in;
@@ -324,35 +331,24 @@ public:
             }
             linalg::lu_solve(e1_, piv1_, r[0]);
             linalg::complex_lu_solve(e2_, piv2_, r[1], r[2]);
-            ++newt;
             ++iterations_;
             const T n1 = scaled_norm(r[0], y, newton_tol_);
             const T n2 = scaled_norm(r[1], y, newton_tol_);
             const T n3 = scaled_norm(r[2], y, newton_tol_);
             const T dyno = std::sqrt((n1 * n1 + n2 * n2 + n3 * n3) / T(3));
             if (!detail::is_finite(dyno)) return retry_smaller(h, status::non_finite);
-            if (newt > 1 && newt < max_newton_iterations) {
-                const T thq = dyno / dynold;
-                theta = newt == 2 ? thq : std::sqrt(thq * thqold);
-                thqold = thq;
-                if (!(theta < T(99) / T(100))) return retry_smaller(h, status::ok);
-                faccon = theta / (T(1) - theta);
-                const int left = static_cast<int>(max_newton_iterations - 1 - newt);
-                const T dyth = faccon * dyno * std::pow(theta, static_cast<T>(left)) / fnewt_;
-                if (dyth >= T(1)) {
-                    // Convergence within the cap is not expected: a smaller step, by radau5.f's formula.
-                    const T qnewt = dyth < T(1e-4f) ? T(1e-4f) : (dyth > T(20) ? T(20) : dyth);
-                    const T hhfac = T(4) / T(5) * std::pow(qnewt, -T(1) / static_cast<T>(4 + left));
-                    return reject(h, hhfac);
-                }
-            }
-            dynold = detail::max_value(dyno, eps);
+            const auto verdict = newton.next(dyno);
+            if (verdict == detail::theta_monitor<T>::verdict::diverged) return retry_smaller(h, status::ok);
+            // Convergence within the cap is not expected: a smaller step, by radau5.f's formula.
+            if (verdict == detail::theta_monitor<T>::verdict::slow) return reject(h, newton.shrink());
             for (std::size_t i = 0; i < 3; ++i)
                 for (std::size_t n = 0; n < N; ++n) w[i][n] += r[i][n];
             transform(co::t, w, z);
-            if (faccon * dyno <= fnewt_) break;
+            if (verdict == detail::theta_monitor<T>::verdict::converged) break;
         }
-        faccon_ = faccon;
+        faccon_ = newton.faccon();
+        const T theta = newton.theta();
+        const std::size_t newt = newton.iterations();
 
         // The error estimate, filtered through E1 = (gamma / h) I - J (HW II (8.19), (8.20)).
         State f2;
@@ -379,11 +375,7 @@ public:
 
         // The next step size (radau5.f): the safety lowered by Newton's iterations, within [0.2, 8] times h.
         const T habs = detail::abs_value(h);
-        const T facr = T(1) / control_.max_factor;
-        const T facl = T(1) / control_.min_factor;
-        const T cfac = control_.safety * static_cast<T>(1 + 2 * max_newton_iterations);
-        const T fac = smaller(control_.safety, cfac / static_cast<T>(newt + 2 * max_newton_iterations));
-        T quot = clamp(std::pow(e, T(1) / T(4)) / fac, facr, facl);
+        T quot = detail::hairer_quotient(control_, e, estimate_order, newt, max_newton_iterations);
         T hnew = habs / quot;
         if (!(e < T(1))) {
             ++rejected_;
@@ -398,8 +390,7 @@ public:
         if (!detail::all_finite(y_new)) return status::non_finite;
         if (have_accepted_) {
             // Gustafsson's predictive controller (radau5.f, PRED)
-            T facgus = (h_acc_ / habs) * std::pow(e * e / err_acc_, T(1) / T(4)) / control_.safety;
-            facgus = clamp(facgus, facr, facl);
+            const T facgus = detail::gustafsson_quotient(control_, habs, e, h_acc_, err_acc_, estimate_order);
             quot = detail::max_value(quot, facgus);
             hnew = habs / quot;
         }
@@ -449,9 +440,6 @@ public:
     }
 
 private:
-    static T clamp(T x, T lo, T hi) noexcept { return x < lo ? lo : (x > hi ? hi : x); }
-    static T smaller(T a, T b) noexcept { return b < a ? b : a; }
-
     // out_i = sum_j m_ij in_j, per component
     static void transform(const std::array<std::array<T, 3>, 3>& m, const std::array<State, 3>& in,
                           std::array<State, 3>& out) noexcept {
@@ -466,7 +454,7 @@ private:
     // f at the attempt's start: kept from the accepted step that ended there (computed once), or a new start.
     template <class System>
     status prepare_point(System& f, T t, const State& y) {
-        if (point_valid_ && same_time(t, t_point_) && detail::same_values(y, y_point_)) {
+        if (point_valid_ && detail::same_point_time(t, t_point_) && detail::same_values(y, y_point_)) {
             if (f0_valid_) return status::ok;
             detail::evaluate(f, t_point_, y_point_, f0_);
             if (!detail::all_finite(f0_)) return status::non_finite;
@@ -491,10 +479,6 @@ private:
         faccon_ = T(1);
         failures_ = 0;
         return status::ok;
-    }
-    static bool same_time(T a, T b) noexcept {
-        const T d = detail::abs_value(a - b);
-        return d <= T(4) * std::numeric_limits<T>::epsilon() * (detail::abs_value(a) + detail::abs_value(b));
     }
 
     // E1 = (gamma / h) I - J and E2 = ((alpha + i beta) / h) I - J, factored.
