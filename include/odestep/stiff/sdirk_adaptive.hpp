@@ -22,6 +22,7 @@
 #include "../system.hpp"
 #include "../tables/implicit_rk.hpp"
 #include "radau5.hpp"
+#include "step_control.hpp"
 
 namespace odestep {
 
@@ -141,11 +142,9 @@ public:
 
     /// Tolerances 1e-6 (float: 1e-4), RADAU5's controller (radau5_control).
     sdirk_adaptive() noexcept
-        : sdirk_adaptive(
-              tolerances<State>::uniform(detail::default_tolerance<T>(), detail::default_tolerance<T>())) {}
+        : sdirk_adaptive(tolerances<State>::uniform(detail::default_tolerance<T>(), detail::default_tolerance<T>())) {}
     /// The given tolerances and controller settings (checked by settings_status() before any use).
-    explicit sdirk_adaptive(const tolerances<State>& tol,
-                            const step_control<T>& control = radau5_control<T>()) noexcept
+    explicit sdirk_adaptive(const tolerances<State>& tol, const step_control<T>& control = radau5_control<T>()) noexcept
         : tol_(tol), control_(control) {
         newton_tolerance();
     }
@@ -173,21 +172,21 @@ public:
     /// Replaces the controller's settings (checked by the next call).
     void set_control(const step_control<T>& control) noexcept { control_ = control; }
     /// |h| of the next attempt; 0 before the first (then odestep::initial_step chooses it).
-    T step_size() const noexcept { return h_; }
+    T step_size() const noexcept { return ctl_.h; }
     /// Sets |h| of the next attempt (0: estimate it); a negative or non-finite value is ignored.
     void set_step_size(T h) noexcept {
-        if (detail::is_finite(h) && h >= T(0)) h_ = h;
+        if (detail::is_finite(h) && h >= T(0)) ctl_.h = h;
     }
     /// Forgets everything carried (step size, Jacobian, factorization, controller memory). The counts stay.
     void restart() noexcept {
-        h_ = T(0);
+        ctl_.h = T(0);
         point_valid_ = false;
     }
 
     /// Accepted steps since construction.
     step_count accepted_steps() const noexcept { return accepted_; }
     /// Rejected attempts since construction.
-    step_count rejected_steps() const noexcept { return rejected_; }
+    step_count rejected_steps() const noexcept { return ctl_.rejected; }
     /// Jacobian evaluations since construction.
     step_count jacobian_evaluations() const noexcept { return jacobians_; }
     /// LU factorizations of E since construction.
@@ -212,7 +211,7 @@ public:
         const T rem = detail::abs_value(span);
         status s = prepare_point(f, t, y);
         if (s != status::ok) return s;
-        T mag = h_;
+        T mag = ctl_.h;
         if (!(mag > T(0))) {
             T limit = rem;
             if (control_.max_step > T(0) && control_.max_step < limit) limit = control_.max_step;
@@ -223,7 +222,7 @@ public:
         const bool stretch_ok = !(control_.max_step > T(0)) || rem <= control_.max_step;
         const bool last = mag >= rem || (mag + mag / T(100) >= rem && stretch_ok);
         T h = last ? span : dir * mag;
-        if (!last && keep_lu_ && lu_valid_ && h_lu_ * dir > T(0)) {
+        if (!last && ctl_.keep_lu && lu_valid_ && h_lu_ * dir > T(0)) {
             // as radau5: a step 1 to 1.2 times the factored one, with Newton fast, keeps the factorization
             const T qt = mag / detail::abs_value(h_lu_);
             if (qt >= T(1) && qt <= T(6) / T(5) && detail::abs_value(h_lu_) < rem) h = h_lu_;
@@ -231,7 +230,7 @@ public:
         if (!last && !(detail::abs_value(h) > T(10) * std::numeric_limits<T>::epsilon() * detail::abs_value(t)))
             return status::step_too_small;
 
-        if (need_jacobian_) {
+        if (ctl_.need_jacobian) {
             if constexpr (jacobian_rhs_evals_v<System, State> != 0) {
                 // differences need f(t, y) itself, not the previous step's stage slope
                 if (!slope_exact_) {
@@ -244,15 +243,15 @@ public:
             s = detail::jacobian_of(f, t, y, slope_, jac_);
             if (s != status::ok) return s;
             if (!linalg::detail::all_entries_finite(jac_)) return status::singular_matrix;
-            need_jacobian_ = false;
-            jacobian_fresh_ = true;
+            ctl_.need_jacobian = false;
+            ctl_.jacobian_fresh = true;
             lu_valid_ = false;
         }
         if (!lu_valid_ || !(h == h_lu_)) {
             ++decompositions_;
             if (!factor(h)) {
                 lu_valid_ = false;
-                return retry_smaller(h, status::singular_matrix);
+                return ctl_.retry_smaller(h, status::singular_matrix, max_failures_in_a_row);
             }
         }
 
@@ -280,21 +279,23 @@ public:
             const T ti = (last && i + 1 == S) ? t_end : t + tab.c[i] * h;
             detail::theta_monitor<T> newton(faccon_, theta_keep_, fnewt_, max_newton_iterations);
             for (;;) {
-                if (newton.iterations() >= max_newton_iterations) return retry_smaller(h, status::ok);
+                if (newton.iterations() >= max_newton_iterations)
+                    return ctl_.retry_smaller(h, status::ok, max_failures_in_a_row);
                 State in;
                 for (std::size_t n = 0; n < N; ++n) in[n] = y[n] + z[n];
                 State r;
                 detail::evaluate(f, ti, static_cast<const State&>(in), r);
-                if (!detail::all_finite(r)) return retry_smaller(h, status::non_finite);
+                if (!detail::all_finite(r)) return ctl_.retry_smaller(h, status::non_finite, max_failures_in_a_row);
                 // E dz = f(y + z) - (z - known) / (h gamma)
                 for (std::size_t n = 0; n < N; ++n) r[n] -= (z[n] - known[n]) / hg;
                 linalg::lu_solve(e_, piv_, r);
                 ++iterations_;
                 const T dyno = scaled_norm(r, y, tol_);
-                if (!detail::is_finite(dyno)) return retry_smaller(h, status::non_finite);
+                if (!detail::is_finite(dyno)) return ctl_.retry_smaller(h, status::non_finite, max_failures_in_a_row);
                 const auto verdict = newton.next(dyno);
-                if (verdict == detail::theta_monitor<T>::verdict::diverged) return retry_smaller(h, status::ok);
-                if (verdict == detail::theta_monitor<T>::verdict::slow) return reject(h, newton.shrink());
+                if (verdict == detail::theta_monitor<T>::verdict::diverged)
+                    return ctl_.retry_smaller(h, status::ok, max_failures_in_a_row);
+                if (verdict == detail::theta_monitor<T>::verdict::slow) return ctl_.reject(h, newton.shrink());
                 for (std::size_t n = 0; n < N; ++n) z[n] += r[n];
                 if (verdict == detail::theta_monitor<T>::verdict::converged) break;
             }
@@ -320,43 +321,19 @@ public:
         if (e < T(1e-10f)) e = T(1e-10f);
 
         const T habs = detail::abs_value(h);
-        T quot = detail::hairer_quotient(control_, e, estimate_order, most, max_newton_iterations);
-        T hnew = habs / quot;
+        const T quot = detail::hairer_quotient(control_, e, estimate_order, most, max_newton_iterations);
         if (!(e < T(1))) {
-            ++rejected_;
-            rejected_last_ = true;
-            keep_lu_ = false;
-            need_jacobian_ = !jacobian_fresh_;
-            h_ = first_ ? habs / T(10) : hnew;
+            ctl_.reject_error(habs, quot);
             return status::ok;
         }
         if (!detail::all_finite(y_new)) return status::non_finite;
-        if (have_accepted_) {
-            const T facgus = detail::gustafsson_quotient(control_, habs, e, h_acc_, err_acc_, estimate_order);
-            quot = detail::max_value(quot, facgus);
-            hnew = habs / quot;
-        }
-        have_accepted_ = true;
-        h_acc_ = habs;
-        err_acc_ = detail::max_value(T(1) / T(100), e);
         // The last stage's slope is the new point's: k_s = (z_s - known_s) / (h gamma).
         State slope_new;
         for (std::size_t n = 0; n < N; ++n) slope_new[n] = kh[S - 1][n] / h;
         const T t_new = last ? t_end : t + h;
         sink(static_cast<const T&>(t), static_cast<const T&>(h), static_cast<const State&>(y),
-             static_cast<const State&>(slope_), static_cast<const State&>(y_new),
-             static_cast<const State&>(slope_new));
-        if (control_.max_step > T(0) && hnew > control_.max_step) hnew = control_.max_step;
-        if (rejected_last_ && hnew > habs) hnew = habs;
-        // A step shortened to land on t_end says nothing against the size planned, unless it asked for less.
-        if (last && !(hnew < habs) && mag > hnew) hnew = mag;
-        h_ = hnew > T(0) ? hnew : habs;
-        rejected_last_ = false;
-        first_ = false;
-        keep_lu_ = theta <= theta_keep_;
-        need_jacobian_ = theta > theta_keep_;
-        jacobian_fresh_ = false;
-        failures_ = 0;
+             static_cast<const State&>(slope_), static_cast<const State&>(y_new), static_cast<const State&>(slope_new));
+        ctl_.accept(control_, estimate_order, habs, e, quot, last, mag, theta, theta_keep_);
         t_point_ = t_new;
         detail::assign(y_point_, y_new);
         detail::assign(y_prev_, y);
@@ -385,15 +362,9 @@ private:
         t_point_ = t;
         detail::assign(y_point_, y);
         point_valid_ = true;
-        need_jacobian_ = true;
-        jacobian_fresh_ = false;
+        ctl_.new_point();
         lu_valid_ = false;
-        keep_lu_ = false;
-        first_ = true;
-        rejected_last_ = false;
-        have_accepted_ = false;
         faccon_ = T(1);
-        failures_ = 0;
         return status::ok;
     }
 
@@ -407,30 +378,6 @@ private:
         h_lu_ = h;
         lu_valid_ = true;
         return true;
-    }
-
-    // As radau5's: a rejected attempt with h halved; `failure` (singular matrix, NaN stages) is returned after
-    // max_failures_in_a_row in a row; ok: Newton diverged or reached its cap (bounded by the caller's cap).
-    status retry_smaller(T h, status failure) noexcept {
-        if (failure != status::ok && ++failures_ >= max_failures_in_a_row) {
-            failures_ = 0;
-            ++rejected_;
-            rejected_last_ = true;
-            keep_lu_ = false;
-            need_jacobian_ = !jacobian_fresh_;
-            h_ = detail::abs_value(h) / T(2);
-            return failure;
-        }
-        return reject(h, T(1) / T(2));
-    }
-    status reject(T h, T factor_) noexcept {
-        ++rejected_;
-        rejected_last_ = true;
-        keep_lu_ = false;
-        need_jacobian_ = !jacobian_fresh_;
-        h_ = detail::abs_value(h) * factor_;
-        if (!(h_ > T(0))) return status::step_too_small;
-        return status::ok;
     }
 
     // Newton's tolerance kappa from the smallest positive rtol, as radau5's.
@@ -453,10 +400,8 @@ private:
     T fnewt_ = T(3) / T(100);
     T theta_keep_ = T(1) / T(10);
 
-    T h_ = T(0);
+    detail::stiff_step_control<T> ctl_{};  // the step size, the Jacobian policy, the rejections (radau5's)
     T h_lu_ = T(0);
-    T h_acc_ = T(0);
-    T err_acc_ = T(1);
     T faccon_ = T(1);
     T t_point_ = T(0);
     State y_point_{};
@@ -468,18 +413,10 @@ private:
     jacobian_t<State> jac_{};
     linalg::matrix<T, N> e_{};
     linalg::pivots<N> piv_{};
-    std::size_t failures_ = 0;
     bool point_valid_ = false;
     bool slope_exact_ = false;
-    bool need_jacobian_ = true;
-    bool jacobian_fresh_ = false;
     bool lu_valid_ = false;
-    bool keep_lu_ = false;
-    bool first_ = true;
-    bool rejected_last_ = false;
-    bool have_accepted_ = false;
     step_count accepted_ = 0;
-    step_count rejected_ = 0;
     step_count jacobians_ = 0;
     step_count decompositions_ = 0;
     step_count iterations_ = 0;
