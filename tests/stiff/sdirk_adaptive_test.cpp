@@ -54,8 +54,8 @@ TEST_CASE("sdirk4: Robertson from (1, 0, 0) to 40, free-running: error <= 10 rto
         errors[k] = worst_relative(y, robertson_40);
         MESSAGE("rtol " << rtols[k] << ": worst relative error " << errors[k] << ", f " << calls << ", accepted "
                         << engine.accepted_steps() << ", rejected " << engine.rejected_steps() << ", Jacobians "
-                        << engine.jacobian_evaluations() << ", LU " << engine.decompositions()
-                        << ", Newton iterations " << engine.newton_iterations());
+                        << engine.jacobian_evaluations() << ", LU " << engine.decompositions() << ", Newton iterations "
+                        << engine.newton_iterations());
         CHECK(errors[k] <= 10 * rtols[k]);
         // the issue's targets: Jacobians <= 0.4 per accepted step, factorizations <= 1.2 per step
         const double steps = double(engine.accepted_steps() + engine.rejected_steps());

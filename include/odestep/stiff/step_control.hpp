@@ -9,9 +9,9 @@
 #include <limits>
 
 #include "../adaptive/control.hpp"
+#include "../detail/grid_clock.hpp"
 #include "../detail/ops.hpp"
 #include "../status.hpp"
-#include "../detail/grid_clock.hpp"
 
 namespace odestep::detail {
 
