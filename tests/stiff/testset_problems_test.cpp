@@ -33,16 +33,17 @@ double scaled_error(const std::array<double, N>& y, const std::array<double, N>&
 
 // One pair on one problem from its start on a constant grid: every interval ok, and the end within 10 tolerances.
 template <class Stepper, class System, class State>
-void passes(const char* pair, System&& f, const State& start, const State& reference, double t1, double dt,
-            double rtol, double atol) {
+void passes(const char* pair, System&& f, const State& start, const State& reference, double t1, double dt, double rtol,
+            double atol) {
     Stepper stepper(odestep::tolerances<State>::uniform(rtol, atol));
     State y = start;
     const auto r = odestep::integrate(stepper, f, y, 0.0, t1, dt);
     INFO(doctest::String(pair) << " at rtol " << rtol);
     REQUIRE(r.status == odestep::status::ok);
     const double e = scaled_error(y, reference, rtol, atol);
-    MESSAGE(doctest::String(pair) << ", rtol " << rtol << ": error " << e << " tolerances, " << stepper.engine().accepted_steps()
-                 << " steps, " << stepper.engine().rejected_steps() << " rejected");
+    MESSAGE(doctest::String(pair) << ", rtol " << rtol << ": error " << e << " tolerances, "
+                                  << stepper.engine().accepted_steps() << " steps, "
+                                  << stepper.engine().rejected_steps() << " rejected");
     CHECK(e <= 10);
 }
 
@@ -78,7 +79,8 @@ TEST_CASE("stiff pairs: Van der Pol eps = 1e-6 (scaled) from (2, -0.66) on a 0.0
     // 1e-8, RODAS3 1799 at 1e-6 and 9456 at 1e-8 (measured with a cap of 10^5): with the default cap they stop
     // there with substep_limit, so they run here with a cap of 20000.
     using S2 = state2<double>;
-    const auto sys = odestep::with_jacobian(odestep_test::scaled_van_der_pol{}, odestep_test::scaled_van_der_pol_jacobian{});
+    const auto sys =
+        odestep::with_jacobian(odestep_test::scaled_van_der_pol{}, odestep_test::scaled_van_der_pol_jacobian{});
     const S2 start{2, -0.66};
     const auto& end = odestep_test::scaled_van_der_pol_at_2;
     for (double rtol : {1e-4, 1e-6, 1e-8}) {
