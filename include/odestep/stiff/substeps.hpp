@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// odestep: the course's form for stiff problems: an error-controlled engine (Radau 5(4), a Rosenbrock pair)
+// odestep: the course's form for stiff problems: an error-controlled engine (Radau 5(4), a Rosenbrock or SDIRK pair)
 // behind the fixed-step stepper interface, one grid interval per call.
 #ifndef ODESTEP_STIFF_SUBSTEPS_HPP
 #define ODESTEP_STIFF_SUBSTEPS_HPP
