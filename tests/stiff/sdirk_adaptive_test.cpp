@@ -94,6 +94,24 @@ TEST_CASE("sdirk4_substeps: Robertson with a difference Jacobian (f alone) on a 
     CHECK(worst_relative(y, robertson_40) <= 1e-5);
 }
 
+TEST_CASE("sdirk4: the published bound holds: f evaluations <= start + attempts x rhs_evals_per_attempt") {
+    // difference Jacobians (f alone), so every path that evaluates f is taken
+    std::size_t calls = 0;
+    auto f = odestep_test::counted(odestep_test::robertson{}, &calls);
+    for (double rtol : {1e-3, 1e-6}) {
+        calls = 0;
+        engine3 engine(odestep::tolerances<S3>::uniform(rtol, rtol * 1e-6));
+        S3 y{1, 0, 0};
+        REQUIRE(odestep::integrate_adaptive(engine, f, y, 0.0, 40.0).status == odestep::status::ok);
+        const auto attempts = engine.accepted_steps() + engine.rejected_steps();
+        MESSAGE("rtol " << rtol << ": f " << calls << " in " << attempts << " attempts, "
+                        << engine.jacobian_evaluations() << " Jacobians");
+        CHECK(calls <= 1 + engine3::rhs_evals_to_start + attempts * engine3::rhs_evals_per_attempt);
+        CHECK(engine.newton_iterations() <= attempts * engine3::stages * engine3::max_newton_iterations);
+        CHECK(engine.decompositions() <= attempts * engine3::decompositions_per_attempt);
+    }
+}
+
 TEST_CASE("sdirk4_substeps: float Robertson at rtol 1e-3 on a 0.1 grid to 40, within 1e-2") {
     using F3 = state3<float>;
     odestep::sdirk4_substeps<F3> stepper(odestep::tolerances<F3>::uniform(1e-3f, 1e-9f));
