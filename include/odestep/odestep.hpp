@@ -26,6 +26,7 @@
 #include "stiff/integrate.hpp"
 #include "stiff/radau5.hpp"
 #include "stiff/rosenbrock_adaptive.hpp"
+#include "stiff/sdirk_adaptive.hpp"
 #include "stiff/substeps.hpp"
 #include "system.hpp"
 #include "tables/adams.hpp"

@@ -82,6 +82,14 @@ cplx sdirk3_r(cplx z) {
     const cplx q = cplx(1) - g * z;
     return p / (q * q * q);
 }
+// SDIRK4 (s = 5, gamma = 1/4, order 4 < s): the part of degree <= 4 of e^z (1 - z/4)^5 (order 4), with no z^5
+// term (R(infinity) = 0, the L-stability HW II Table 6.5 claims), over (1 - z/4)^5; sympy gives the same
+// polynomial from the table's a and b: 1 - z/4 - z^2/8 + z^3/96 + 7 z^4/768.
+cplx sdirk4_r(cplx z) {
+    const cplx p = cplx(1) - z / 4.0L - z * z / 8.0L + z * z * z / 96.0L + 7.0L * z * z * z * z / 768.0L;
+    const cplx q = cplx(1) - z / 4.0L;
+    return p / (q * q * q * q * q);
+}
 
 template <class Tag, class Closed>
 void stability_matches(Closed closed) {
@@ -154,6 +162,7 @@ TEST_CASE("implicit_rk: every table's stability function is its closed form (Pad
     stability_matches<tab::gauss4>(gauss4_r);
     stability_matches<tab::sdirk3>(sdirk3_r);
     stability_matches<tab::radau_iia5>(radau5_r);
+    stability_matches<tab::sdirk4>(sdirk4_r);
 }
 
 // The two slowest cases (about 1 s and 2 s on an emulated Cortex-M4F, where double is software) are in the
@@ -166,6 +175,7 @@ TEST_CASE("implicit_rk: every method is A-stable: |R(z)| <= 1 on the imaginary a
     a_stable<tab::gauss4>();
     a_stable<tab::sdirk3>();
     a_stable<tab::radau_iia5>();
+    a_stable<tab::sdirk4>();
 }
 
 TEST_CASE("implicit_rk: R(infinity) = 0 for the L-stable methods, |R(infinity)| = 1 for trapezoid, midpoint, Gauss") {
@@ -176,6 +186,7 @@ TEST_CASE("implicit_rk: R(infinity) = 0 for the L-stable methods, |R(infinity)| 
     CHECK(std::abs(stability<tab::backward_euler>(far)) < 1e-5L);
     CHECK(std::abs(stability<tab::sdirk3>(far)) < 1e-5L);
     CHECK(std::abs(stability<tab::radau_iia5>(far)) < 1e-5L);
+    CHECK(std::abs(stability<tab::sdirk4>(far)) < 1e-5L);
     // the stiff components are not damped, and the trapezoid and midpoint flip their sign every step
     CHECK(std::abs(std::abs(stability<tab::trapezoid>(far)) - 1) < 1e-5L);
     CHECK(stability<tab::trapezoid>(far).real() < 0);

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <limits>
 
+#include "support/counting.hpp"
 #include "support/order_fit.hpp"
 #include "support/stiff_problems.hpp"
 
@@ -112,6 +113,87 @@ TEST_CASE("rodas4_substeps: Van der Pol mu = 1000, HIRES and OREGO from their in
                                0.0, 360.0, 0.1)
                 .status == odestep::status::ok);
     CHECK(worst_relative(o, odestep_test::orego_at_360) <= 1e-4);
+}
+
+TEST_CASE("rodas4: integrate_times interpolates by cubic Hermite: exact for a cubic, 100 rtol on exp(sin t)") {
+    SUBCASE("y1 = t^3 as y' = (y2, y3, y4, 0) from (0, 0, 0, 6): exact steps (J nilpotent), exact slopes") {
+        // With J^4 = 0 and df/dt = 0 (autonomous: the difference quotient is exactly 0) a Rosenbrock step is
+        // R(hJ) y with R(z) = e^z + O(z^5): exact. The cubic Hermite interpolant through exact ends and slopes
+        // of a cubic is the cubic.
+        using S4 = std::array<double, 4>;
+        auto f = [](double, const S4& y) { return S4{y[1], y[2], y[3], 0}; };
+        auto j = [](double, const S4&, odestep::jacobian_t<S4>& m) {
+            m = {};
+            m[0][1] = m[1][2] = m[2][3] = 1;
+        };
+        odestep::rosenbrock_adaptive<odestep::tables::rodas4, S4> engine(odestep::tolerances<S4>::uniform(1e-6, 1e-6));
+        engine.set_step_size(0.7);
+        const std::array<double, 9> times{0.1, 0.35, 0.5, 0.9, 1.3, 1.75, 2.2, 2.6, 3.0};
+        S4 y{0, 0, 0, 6};
+        double worst = 0;
+        const auto r =
+            odestep::integrate_times(engine, odestep::with_jacobian(f, j), y, 0.0, times, [&](double t, const S4& u) {
+                worst = std::fmax(worst, std::fabs(u[0] - t * t * t));
+                worst = std::fmax(worst, std::fabs(u[1] - 3 * t * t));
+            });
+        REQUIRE(r.status == odestep::status::ok);
+        MESSAGE("worst error " << worst << " in " << r.steps << " steps");
+        CHECK(r.steps < times.size());
+        CHECK(worst <= 1e-12);
+    }
+    SUBCASE("exp(sin t) at 0.05 spacing to 20, Rodas4 and RODAS3, with the evaluations it costs") {
+        std::size_t calls = 0;
+        const auto sys = odestep::with_jacobian(odestep_test::counted(odestep_test::exp_sin{}, &calls),
+                                                odestep_test::exp_sin_jacobian{});
+        std::array<double, 400> times{};
+        for (std::size_t i = 0; i < times.size(); ++i) times[i] = 0.05 * double(i + 1);
+        for (double rtol : {1e-4, 1e-6, 1e-8}) {
+            calls = 0;
+            odestep::rosenbrock_adaptive<odestep::tables::rodas4, S3> engine(
+                odestep::tolerances<S3>::uniform(rtol, rtol));
+            S3 y = odestep_test::exp_sin::start<double>();
+            double worst = 0;
+            std::size_t seen = 0;
+            const auto r = odestep::integrate_times(engine, sys, y, 0.0, times, [&](double t, const S3& u) {
+                const S3 x = odestep_test::exp_sin::exact(t);
+                for (std::size_t i = 0; i < 3; ++i) worst = std::fmax(worst, std::fabs(u[i] - x[i]));
+                ++seen;
+            });
+            REQUIRE(r.status == odestep::status::ok);
+            CHECK(seen == times.size());
+            const auto attempts = engine.accepted_steps() + engine.rejected_steps();
+            MESSAGE("Rodas4, rtol " << rtol << ": largest error at the times " << worst << ", " << r.steps
+                                    << " steps, f " << calls);
+            CHECK(worst <= 100 * rtol);
+            // the published bound: the start, every attempt, and two evaluations to complete each step
+            CHECK(calls <=
+                  engine.rhs_evals_to_start +
+                      attempts * (engine.rhs_evals_per_attempt + odestep::rosenbrock_dense<S3>::rhs_evals_to_complete));
+        }
+        odestep::rosenbrock_adaptive<odestep::tables::rodas3, S3> rodas3(odestep::tolerances<S3>::uniform(1e-6, 1e-6));
+        S3 y = odestep_test::exp_sin::start<double>();
+        double worst = 0;
+        REQUIRE(odestep::integrate_times(rodas3, sys, y, 0.0, times, [&](double t, const S3& u) {
+                    const S3 x = odestep_test::exp_sin::exact(t);
+                    for (std::size_t i = 0; i < 3; ++i) worst = std::fmax(worst, std::fabs(u[i] - x[i]));
+                }).status == odestep::status::ok);
+        MESSAGE("RODAS3, rtol 1e-6: largest error at the times " << worst);
+        CHECK(worst <= 100 * 1e-6);
+    }
+    SUBCASE("Robertson at 1, 10, ..., 1e5 from (1, 0, 0): the interpolant keeps y1 + y2 + y3 = 1") {
+        const auto sys = odestep::with_jacobian(odestep_test::robertson{}, odestep_test::robertson_jacobian{});
+        odestep::rosenbrock_adaptive<odestep::tables::rodas4, S3> engine(odestep::tolerances<S3>::uniform(1e-6, 1e-12));
+        std::array<double, 6> times{1, 10, 40, 100, 1e3, 1e5};
+        S3 y{1, 0, 0};
+        double at40 = 0;
+        const auto r = odestep::integrate_times(engine, sys, y, 0.0, times, [&](double t, const S3& u) {
+            CHECK(std::fabs(u[0] + u[1] + u[2] - 1) < 1e-12);
+            if (t == 40) at40 = worst_relative(u, robertson_40);
+        });
+        REQUIRE(r.status == odestep::status::ok);
+        MESSAGE("Robertson at 40 from the interpolant: worst relative error " << at40);
+        CHECK(at40 <= 1e-5);
+    }
 }
 
 TEST_CASE("rodas4_substeps: NaN from f and the attempt cap leave y bit for bit") {

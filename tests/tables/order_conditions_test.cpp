@@ -233,7 +233,7 @@ struct table_list {};
 using all_tables = table_list<tab::euler, tab::midpoint, tab::heun, tab::ralston2, tab::kutta3, tab::ssprk3, tab::rk4,
                               tab::rk38, tab::bogacki_shampine32, tab::fehlberg45, tab::cash_karp54,
                               tab::dormand_prince54, tab::fehlberg78, tab::dop853, tab::backward_euler, tab::trapezoid,
-                              tab::implicit_midpoint, tab::gauss4, tab::sdirk3, tab::radau_iia5>;
+                              tab::implicit_midpoint, tab::gauss4, tab::sdirk3, tab::radau_iia5, tab::sdirk4>;
 
 template <class... Tags, class F>
 void for_each_table(table_list<Tags...>, F&& f) {

@@ -153,6 +153,35 @@ T step_factor(const step_control<T>& s, pi_gains<T> g, int k, T err, T err_prev,
     return detail::max_value(s.min_factor, f);
 }
 
+namespace detail {
+/// The step-size quotient |h| / |h_new| of Hairer's stiff codes (radau5.f; odestep::radau5 and
+/// odestep::sdirk_adaptive) after an attempt with error norm err and an estimate of order k:
+/// err^(1/k) / fac, fac the safety lowered by the attempt's Newton iterations,
+/// fac = min(safety, safety (1 + 2 cap) / (iterations + 2 cap)), within [1 / max_factor, 1 / min_factor].
+template <class T>
+T hairer_quotient(const step_control<T>& c, T err, int k, std::size_t iterations, std::size_t cap) noexcept {
+    const T cfac = c.safety * static_cast<T>(1 + 2 * cap);
+    const T lowered = cfac / static_cast<T>(iterations + 2 * cap);
+    const T fac = lowered < c.safety ? lowered : c.safety;
+    const T q = std::pow(err, T(1) / static_cast<T>(k)) / fac;
+    const T lo = T(1) / c.max_factor;
+    const T hi = T(1) / c.min_factor;
+    return q < lo ? lo : (q > hi ? hi : q);
+}
+
+/// Gustafsson's predictive controller (Gustafsson 1994, BIT 34, 173-187; radau5.f's PRED) as a quotient
+/// |h| / |h_new| after an accepted step of size h with error err, the previous accepted step having had
+/// size h_prev and error err_prev: (h_prev / h) (err^2 / err_prev)^(1/k) / safety, within the same bounds
+/// as hairer_quotient. The engines take the larger of the two quotients (the smaller step).
+template <class T>
+T gustafsson_quotient(const step_control<T>& c, T h, T err, T h_prev, T err_prev, int k) noexcept {
+    const T q = (h_prev / h) * std::pow(err * err / err_prev, T(1) / static_cast<T>(k)) / c.safety;
+    const T lo = T(1) / c.max_factor;
+    const T hi = T(1) / c.min_factor;
+    return q < lo ? lo : (q > hi ? hi : q);
+}
+}  // namespace detail
+
 /// The first step's size by Hairer's algorithm (HNW I, Sec. II.4, "Starting step size"; the routine HINIT
 /// of DOPRI5), for a method of order p from (t0, y0) with f0 = f(t0, y0) given; one more evaluation of f.
 ///   d0 = ||y0||, d1 = ||f0||;  h0 = 0.01 d0 / d1 (1e-6 when either is below 1e-5)

@@ -5,6 +5,7 @@
 #define ODESTEP_RK_NEWTON_HPP
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 
@@ -103,6 +104,71 @@ private:
     T previous_ = T(0);
     T rate_ = T(1);
     std::size_t iteration_ = 0;
+};
+
+/// \brief Hairer's convergence monitor of one simplified Newton solve in an error-controlled stiff engine
+/// (radau5.f; Hairer & Wanner, Solving ODE II, Sec. IV.8, (8.10)-(8.13)): odestep::radau5 and
+/// odestep::sdirk_adaptive run their iterations through it.
+///
+/// Fed the scaled norm of every update (already known to be finite), it estimates the contraction theta (the
+/// ratio of successive norms, from the third iteration the geometric mean of the last two ratios) and says:
+/// `diverged` when theta >= 0.99 (the caller rejects the step, h halved); `slow` when the rate predicts no
+/// convergence within the cap (theta^(iterations left) theta / (1 - theta) ||dz|| > kappa; the caller rejects
+/// with h times shrink(), radau5.f's formula); else the update is to be applied, and `converged` once
+/// theta / (1 - theta) ||dz|| <= kappa. Before a rate is known theta / (1 - theta) is the previous solve's, to
+/// the power 0.8 (radau5.f's FACCON).
+template <class T>
+class theta_monitor {
+public:
+    enum class verdict : unsigned char { iterate, converged, diverged, slow };
+
+    /// A new solve: `faccon` the previous solve's theta / (1 - theta) (1 at a start), `theta` the rate assumed
+    /// until one is measured, `kappa` the tolerance on the remaining error, `cap` the iteration cap.
+    theta_monitor(T faccon, T theta, T kappa, std::size_t cap) noexcept
+        : faccon_(std::pow(max_value(faccon, std::numeric_limits<T>::epsilon()), T(4) / T(5))),
+          theta_(theta),
+          kappa_(kappa),
+          cap_(cap) {}
+
+    /// Takes the norm of the latest update.
+    verdict next(T norm) noexcept {
+        ++iterations_;
+        if (iterations_ > 1 && iterations_ < cap_) {
+            const T ratio = norm / previous_;
+            theta_ = iterations_ == 2 ? ratio : std::sqrt(ratio * ratio_old_);
+            ratio_old_ = ratio;
+            if (!(theta_ < T(99) / T(100))) return verdict::diverged;
+            faccon_ = theta_ / (T(1) - theta_);
+            const std::size_t left = cap_ - 1 - iterations_;
+            const T predicted = faccon_ * norm * std::pow(theta_, static_cast<T>(left)) / kappa_;
+            if (predicted >= T(1)) {
+                // radau5.f: h * 0.8 q^(-1 / (4 + left)), q the predicted excess within [1e-4, 20]
+                const T q = predicted < T(1e-4f) ? T(1e-4f) : (predicted > T(20) ? T(20) : predicted);
+                shrink_ = T(4) / T(5) * std::pow(q, -T(1) / static_cast<T>(4 + left));
+                return verdict::slow;
+            }
+        }
+        previous_ = max_value(norm, std::numeric_limits<T>::epsilon());
+        return faccon_ * norm <= kappa_ ? verdict::converged : verdict::iterate;
+    }
+    /// Iterations so far.
+    std::size_t iterations() const noexcept { return iterations_; }
+    /// The latest contraction estimate.
+    T theta() const noexcept { return theta_; }
+    /// theta / (1 - theta), carried to the next solve.
+    T faccon() const noexcept { return faccon_; }
+    /// After `slow`: the factor for h.
+    T shrink() const noexcept { return shrink_; }
+
+private:
+    T faccon_;
+    T theta_;
+    T kappa_;
+    std::size_t cap_;
+    T previous_ = T(0);
+    T ratio_old_ = T(0);
+    T shrink_ = T(1) / T(2);
+    std::size_t iterations_ = 0;
 };
 
 /// 1 / (relative |y_i| + absolute) for every component: the update's units.

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
-// odestep: the free-running loops for the error-controlled stiff engine: integrate_adaptive (every accepted
-// step observed) and integrate_times (the state at the caller's times, from the collocation polynomial), the
-// same names and contracts as the explicit pairs' loops (adaptive/integrate_adaptive.hpp).
+// odestep: the free-running loops for the error-controlled stiff engines (Radau 5(4), the Rosenbrock and SDIRK
+// pairs): integrate_adaptive (every accepted step observed) and integrate_times (the state at the caller's times,
+// from Radau's collocation polynomial or the pairs' cubic Hermite interpolant), the same names and contracts as
+// the explicit pairs' loops (adaptive/integrate_adaptive.hpp).
 #ifndef ODESTEP_STIFF_INTEGRATE_HPP
 #define ODESTEP_STIFF_INTEGRATE_HPP
 
@@ -15,6 +16,7 @@
 #include "../status.hpp"
 #include "radau5.hpp"
 #include "rosenbrock_adaptive.hpp"
+#include "sdirk_adaptive.hpp"
 
 namespace odestep {
 
@@ -69,6 +71,29 @@ template <class Method, class State, class System>
     return integrate_adaptive(engine, f, y, t0, t1, none, max_attempts);
 }
 
+/// integrate_adaptive with an SDIRK pair (odestep::sdirk_adaptive): the same contract as with the Radau IIA 5
+/// engine, at most 1 + rhs_evals_to_start + max_attempts * rhs_evals_per_attempt evaluations of f.
+template <class Method, class State, class System, class Observer,
+          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>>, int> = 0>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(sdirk_adaptive<Method, State>& engine,
+                                                                       System&& f, State& y,
+                                                                       detail::time_t_of<State> t0,
+                                                                       detail::time_t_of<State> t1, Observer&& observe,
+                                                                       step_count max_attempts = default_max_attempts) {
+    return detail::free_running(engine, f, y, t0, t1, observe, max_attempts);
+}
+
+/// integrate_adaptive with an SDIRK pair, without an observer.
+template <class Method, class State, class System>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(sdirk_adaptive<Method, State>& engine,
+                                                                       System&& f, State& y,
+                                                                       detail::time_t_of<State> t0,
+                                                                       detail::time_t_of<State> t1,
+                                                                       step_count max_attempts = default_max_attempts) {
+    detail::no_observer none;
+    return integrate_adaptive(engine, f, y, t0, t1, none, max_attempts);
+}
+
 /// Integrates from t0 to the last of `times` (a container of T with size() and operator[], in the direction
 /// of the run and never going back) with the engine's free-running steps, and calls observe(times[i], u) with
 /// the state at every times[i]: from the step's collocation polynomial (odestep::radau5_dense, no extra
@@ -85,6 +110,32 @@ template <class State, class System, class Times, class Observer>
                                                                     Observer&& observe,
                                                                     step_count max_attempts = default_max_attempts) {
     radau5_dense<State> dense;
+    return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense, [] { return status::ok; });
+}
+
+/// integrate_times with a Rosenbrock pair (odestep::rosenbrock_adaptive): the same contract as with the Radau IIA 5
+/// engine; the state inside a step is the cubic Hermite interpolant of the step's ends (odestep::rosenbrock_dense,
+/// order 3), which costs up to rosenbrock_dense::rhs_evals_to_complete (2) evaluations of f for each step with
+/// an output time inside it: at most rhs_evals_to_start + max_attempts * (rhs_evals_per_attempt + 2) in all.
+template <class Method, class State, class System, class Times, class Observer>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_times(rosenbrock_adaptive<Method, State>& engine,
+                                                                    System&& f, State& y, detail::time_t_of<State> t0,
+                                                                    const Times& times, Observer&& observe,
+                                                                    step_count max_attempts = default_max_attempts) {
+    rosenbrock_dense<State> dense;
+    return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense,
+                               [&] { return dense.complete(f); });
+}
+
+/// integrate_times with an SDIRK pair (odestep::sdirk_adaptive): the same contract as with the Radau IIA 5
+/// engine; the state inside a step is the cubic Hermite interpolant of the step's ends and slopes
+/// (odestep::sdirk_dense, order 3, no extra evaluation of f).
+template <class Method, class State, class System, class Times, class Observer>
+[[nodiscard]] integrate_result<value_type_t<State>> integrate_times(sdirk_adaptive<Method, State>& engine, System&& f,
+                                                                    State& y, detail::time_t_of<State> t0,
+                                                                    const Times& times, Observer&& observe,
+                                                                    step_count max_attempts = default_max_attempts) {
+    sdirk_dense<State> dense;
     return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense, [] { return status::ok; });
 }
 

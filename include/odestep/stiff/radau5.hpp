@@ -17,10 +17,12 @@
 #include "../linalg/complex_lu.hpp"
 #include "../linalg/jacobian.hpp"
 #include "../linalg/lu.hpp"
+#include "../rk/newton.hpp"
 #include "../state.hpp"
 #include "../status.hpp"
 #include "../system.hpp"
 #include "../tables/implicit_rk.hpp"
+#include "step_control.hpp"
 
 namespace odestep {
 
@@ -193,22 +195,22 @@ public:
     void set_control(const step_control<T>& control) noexcept { control_ = control; }
 
     /// |h| of the next attempt; 0 before the first (then odestep::initial_step chooses it).
-    T step_size() const noexcept { return h_; }
+    T step_size() const noexcept { return ctl_.h; }
     /// Sets |h| of the next attempt (0: estimate it); a negative or non-finite value is ignored.
     void set_step_size(T h) noexcept {
-        if (detail::is_finite(h) && h >= T(0)) h_ = h;
+        if (detail::is_finite(h) && h >= T(0)) ctl_.h = h;
     }
     /// Forgets everything carried (step size, Jacobian, factorizations, polynomial, controller memory): the
     /// next call starts afresh. The counts stay.
     void restart() noexcept {
-        h_ = T(0);
+        ctl_.h = T(0);
         point_valid_ = false;
     }
 
     /// Accepted steps since construction.
     step_count accepted_steps() const noexcept { return accepted_; }
     /// Rejected attempts (error too large, Newton failed, singular matrix, NaN in a stage) since construction.
-    step_count rejected_steps() const noexcept { return rejected_; }
+    step_count rejected_steps() const noexcept { return ctl_.rejected; }
     /// Jacobian evaluations since construction.
     step_count jacobian_evaluations() const noexcept { return jacobians_; }
     /// Decompositions since construction, each one real (E1) and one complex (E2) LU factorization.
@@ -233,7 +235,7 @@ public:
         const T rem = detail::abs_value(span);
         status s = prepare_point(f, t, y);
         if (s != status::ok) return s;
-        T mag = h_;
+        T mag = ctl_.h;
         if (!(mag > T(0))) {
             T limit = rem;
             if (control_.max_step > T(0) && control_.max_step < limit) limit = control_.max_step;
@@ -244,7 +246,7 @@ public:
         const bool stretch_ok = !(control_.max_step > T(0)) || rem <= control_.max_step;
         const bool last = mag >= rem || (mag + mag / T(100) >= rem && stretch_ok);
         T h = last ? span : dir * mag;
-        if (!last && keep_lu_ && lu_valid_ && h_lu_ * dir > T(0)) {
+        if (!last && ctl_.keep_lu && lu_valid_ && h_lu_ * dir > T(0)) {
             // radau5.f: a step 1 to 1.2 times the factored one, with Newton fast, keeps the factorization.
             const T qt = mag / detail::abs_value(h_lu_);
             if (qt >= T(1) && qt <= T(6) / T(5) && detail::abs_value(h_lu_) < rem) h = h_lu_;
@@ -252,20 +254,20 @@ public:
         if (!last && !(detail::abs_value(h) > T(10) * std::numeric_limits<T>::epsilon() * detail::abs_value(t)))
             return status::step_too_small;
 
-        if (need_jacobian_) {
+        if (ctl_.need_jacobian) {
             ++jacobians_;
             s = detail::jacobian_of(f, t, y, f0_, jac_);
             if (s != status::ok) return s;
             if (!linalg::detail::all_entries_finite(jac_)) return status::singular_matrix;
-            need_jacobian_ = false;
-            jacobian_fresh_ = true;
+            ctl_.need_jacobian = false;
+            ctl_.jacobian_fresh = true;
             lu_valid_ = false;
         }
         if (!lu_valid_ || !(h == h_lu_)) {
             ++decompositions_;
             if (!factor(h)) {
                 lu_valid_ = false;
-                return retry_smaller(h, status::singular_matrix);
+                return ctl_.retry_smaller(h, status::singular_matrix, max_failures_in_a_row);
             }
         }
 
@@ -300,19 +302,16 @@ public:
         const T betan = co::beta / h;
         const T eps = std::numeric_limits<T>::epsilon();
         const T stage_time[3] = {t + tab.c[0] * h, t + tab.c[1] * h, last ? t_end : t + h};
-        T faccon = std::pow(detail::max_value(faccon_, eps), T(4) / T(5));
-        T theta = theta_keep_;
-        T dynold = T(0);
-        T thqold = T(0);
-        std::size_t newt = 0;
+        detail::theta_monitor<T> newton(faccon_, theta_keep_, fnewt_, max_newton_iterations);
         for (;;) {
-            if (newt >= max_newton_iterations) return retry_smaller(h, status::ok);
+            if (newton.iterations() >= max_newton_iterations)
+                return ctl_.retry_smaller(h, status::ok, max_failures_in_a_row);
             std::array<State, 3> fz;
             for (std::size_t i = 0; i < 3; ++i) {
                 State in;
                 for (std::size_t n = 0; n < N; ++n) in[n] = y[n] + z[i][n];
                 detail::evaluate(f, stage_time[i], static_cast<const State&>(in), fz[i]);
-                if (!detail::all_finite(fz[i])) return retry_smaller(h, status::non_finite);
+                if (!detail::all_finite(fz[i])) return ctl_.retry_smaller(h, status::non_finite, max_failures_in_a_row);
             }
             // r = (T^-1 (x) I) F - (Lambda / h (x) I) W, then solved with E1 and E2
             std::array<State, 3> r;
@@ -324,35 +323,25 @@ public:
             }
             linalg::lu_solve(e1_, piv1_, r[0]);
             linalg::complex_lu_solve(e2_, piv2_, r[1], r[2]);
-            ++newt;
             ++iterations_;
             const T n1 = scaled_norm(r[0], y, newton_tol_);
             const T n2 = scaled_norm(r[1], y, newton_tol_);
             const T n3 = scaled_norm(r[2], y, newton_tol_);
             const T dyno = std::sqrt((n1 * n1 + n2 * n2 + n3 * n3) / T(3));
-            if (!detail::is_finite(dyno)) return retry_smaller(h, status::non_finite);
-            if (newt > 1 && newt < max_newton_iterations) {
-                const T thq = dyno / dynold;
-                theta = newt == 2 ? thq : std::sqrt(thq * thqold);
-                thqold = thq;
-                if (!(theta < T(99) / T(100))) return retry_smaller(h, status::ok);
-                faccon = theta / (T(1) - theta);
-                const int left = static_cast<int>(max_newton_iterations - 1 - newt);
-                const T dyth = faccon * dyno * std::pow(theta, static_cast<T>(left)) / fnewt_;
-                if (dyth >= T(1)) {
-                    // Convergence within the cap is not expected: a smaller step, by radau5.f's formula.
-                    const T qnewt = dyth < T(1e-4f) ? T(1e-4f) : (dyth > T(20) ? T(20) : dyth);
-                    const T hhfac = T(4) / T(5) * std::pow(qnewt, -T(1) / static_cast<T>(4 + left));
-                    return reject(h, hhfac);
-                }
-            }
-            dynold = detail::max_value(dyno, eps);
+            if (!detail::is_finite(dyno)) return ctl_.retry_smaller(h, status::non_finite, max_failures_in_a_row);
+            const auto verdict = newton.next(dyno);
+            if (verdict == detail::theta_monitor<T>::verdict::diverged)
+                return ctl_.retry_smaller(h, status::ok, max_failures_in_a_row);
+            // Convergence within the cap is not expected: a smaller step, by radau5.f's formula.
+            if (verdict == detail::theta_monitor<T>::verdict::slow) return ctl_.reject(h, newton.shrink());
             for (std::size_t i = 0; i < 3; ++i)
                 for (std::size_t n = 0; n < N; ++n) w[i][n] += r[i][n];
             transform(co::t, w, z);
-            if (faccon * dyno <= fnewt_) break;
+            if (verdict == detail::theta_monitor<T>::verdict::converged) break;
         }
-        faccon_ = faccon;
+        faccon_ = newton.faccon();
+        const T theta = newton.theta();
+        const std::size_t newt = newton.iterations();
 
         // The error estimate, filtered through E1 = (gamma / h) I - J (HW II (8.19), (8.20)).
         State f2;
@@ -363,7 +352,7 @@ public:
         }
         linalg::lu_solve(e1_, piv1_, err);
         T e = scaled_norm(err, y, newton_tol_);
-        if (!(e < T(1)) && (first_ || rejected_last_)) {
+        if (!(e < T(1)) && (ctl_.first || ctl_.rejected_last)) {
             State probe;
             for (std::size_t n = 0; n < N; ++n) probe[n] = y[n] + err[n];
             State f1;
@@ -379,33 +368,14 @@ public:
 
         // The next step size (radau5.f): the safety lowered by Newton's iterations, within [0.2, 8] times h.
         const T habs = detail::abs_value(h);
-        const T facr = T(1) / control_.max_factor;
-        const T facl = T(1) / control_.min_factor;
-        const T cfac = control_.safety * static_cast<T>(1 + 2 * max_newton_iterations);
-        const T fac = smaller(control_.safety, cfac / static_cast<T>(newt + 2 * max_newton_iterations));
-        T quot = clamp(std::pow(e, T(1) / T(4)) / fac, facr, facl);
-        T hnew = habs / quot;
+        const T quot = detail::hairer_quotient(control_, e, estimate_order, newt, max_newton_iterations);
         if (!(e < T(1))) {
-            ++rejected_;
-            rejected_last_ = true;
-            keep_lu_ = false;
-            need_jacobian_ = !jacobian_fresh_;
-            h_ = first_ ? habs / T(10) : hnew;
+            ctl_.reject_error(habs, quot);
             return status::ok;
         }
         State y_new;
         for (std::size_t n = 0; n < N; ++n) y_new[n] = y[n] + z[2][n];
         if (!detail::all_finite(y_new)) return status::non_finite;
-        if (have_accepted_) {
-            // Gustafsson's predictive controller (radau5.f, PRED)
-            T facgus = (h_acc_ / habs) * std::pow(e * e / err_acc_, T(1) / T(4)) / control_.safety;
-            facgus = clamp(facgus, facr, facl);
-            quot = detail::max_value(quot, facgus);
-            hnew = habs / quot;
-        }
-        have_accepted_ = true;
-        h_acc_ = habs;
-        err_acc_ = detail::max_value(T(1) / T(100), e);
         // The collocation polynomial's divided differences (radau5.f, CONT), for dense output and the next
         // step's starting values.
         {
@@ -427,17 +397,8 @@ public:
         const T t_new = last ? t_end : t + h;
         sink(static_cast<const T&>(t_new), static_cast<const T&>(h), static_cast<const State&>(y_new),
              static_cast<const std::array<State, 3>&>(q_));
-        if (control_.max_step > T(0) && hnew > control_.max_step) hnew = control_.max_step;
-        if (rejected_last_ && hnew > habs) hnew = habs;
-        // A step shortened to land on t_end says nothing against the size planned, unless it asked for less.
-        if (last && !(hnew < habs) && mag > hnew) hnew = mag;
-        h_ = hnew > T(0) ? hnew : habs;
-        rejected_last_ = false;
-        first_ = false;
-        keep_lu_ = theta <= theta_keep_;
-        need_jacobian_ = theta > theta_keep_;
-        jacobian_fresh_ = false;
-        failures_ = 0;
+        // the next step: Gustafsson's predictive controller (radau5.f, PRED) with the quotient above
+        ctl_.accept(control_, estimate_order, habs, e, quot, last, mag, theta, theta_keep_);
         t_point_ = t_new;
         detail::assign(y_point_, y_new);
         f0_valid_ = false;
@@ -449,9 +410,6 @@ public:
     }
 
 private:
-    static T clamp(T x, T lo, T hi) noexcept { return x < lo ? lo : (x > hi ? hi : x); }
-    static T smaller(T a, T b) noexcept { return b < a ? b : a; }
-
     // out_i = sum_j m_ij in_j, per component
     static void transform(const std::array<std::array<T, 3>, 3>& m, const std::array<State, 3>& in,
                           std::array<State, 3>& out) noexcept {
@@ -466,7 +424,7 @@ private:
     // f at the attempt's start: kept from the accepted step that ended there (computed once), or a new start.
     template <class System>
     status prepare_point(System& f, T t, const State& y) {
-        if (point_valid_ && same_time(t, t_point_) && detail::same_values(y, y_point_)) {
+        if (point_valid_ && detail::same_point_time(t, t_point_) && detail::same_values(y, y_point_)) {
             if (f0_valid_) return status::ok;
             detail::evaluate(f, t_point_, y_point_, f0_);
             if (!detail::all_finite(f0_)) return status::non_finite;
@@ -480,21 +438,11 @@ private:
         detail::assign(y_point_, y);
         point_valid_ = true;
         f0_valid_ = true;
-        need_jacobian_ = true;
-        jacobian_fresh_ = false;
+        ctl_.new_point();
         lu_valid_ = false;
-        keep_lu_ = false;
         polynomial_valid_ = false;
-        first_ = true;
-        rejected_last_ = false;
-        have_accepted_ = false;
         faccon_ = T(1);
-        failures_ = 0;
         return status::ok;
-    }
-    static bool same_time(T a, T b) noexcept {
-        const T d = detail::abs_value(a - b);
-        return d <= T(4) * std::numeric_limits<T>::epsilon() * (detail::abs_value(a) + detail::abs_value(b));
     }
 
     // E1 = (gamma / h) I - J and E2 = ((alpha + i beta) / h) I - J, factored.
@@ -518,31 +466,6 @@ private:
         h_lu_ = h;
         lu_valid_ = true;
         return true;
-    }
-
-    // A rejected attempt with a smaller step (radau5.f's "unexpected step rejection", label 78): h halved.
-    // `failure` names what a repeated failure turns into (singular matrix, NaN stages); ok: none (Newton
-    // diverged or reached its cap, bounded by the caller's attempt cap).
-    status retry_smaller(T h, status failure) noexcept {
-        if (failure != status::ok && ++failures_ >= max_failures_in_a_row) {
-            failures_ = 0;
-            ++rejected_;
-            rejected_last_ = true;
-            keep_lu_ = false;
-            need_jacobian_ = !jacobian_fresh_;
-            h_ = detail::abs_value(h) / T(2);
-            return failure;
-        }
-        return reject(h, T(1) / T(2));
-    }
-    status reject(T h, T factor_) noexcept {
-        ++rejected_;
-        rejected_last_ = true;
-        keep_lu_ = false;
-        need_jacobian_ = !jacobian_fresh_;
-        h_ = detail::abs_value(h) * factor_;
-        if (!(h_ > T(0))) return status::step_too_small;
-        return status::ok;
     }
 
     void transform_tolerances() noexcept {
@@ -573,11 +496,9 @@ private:
     T fnewt_ = T(3) / T(100);
     T theta_keep_ = T(1) / T(10);  // radau5.f's THET: Newton's rate below which the Jacobian is kept
 
-    T h_ = T(0);      // |h| of the next attempt
-    T h_lu_ = T(0);   // the signed h of the factorization
-    T h_old_ = T(1);  // the signed h of the last accepted step (its polynomial)
-    T h_acc_ = T(0);  // Gustafsson's memory: the last accepted |h| and its error
-    T err_acc_ = T(1);
+    detail::stiff_step_control<T> ctl_{};  // the step size, the Jacobian policy, the rejections
+    T h_lu_ = T(0);                        // the signed h of the factorization
+    T h_old_ = T(1);                       // the signed h of the last accepted step (its polynomial)
     T faccon_ = T(1);
     T t_point_ = T(0);
     State y_point_{};
@@ -588,19 +509,11 @@ private:
     linalg::complex_matrix<T, N> e2_{};
     linalg::pivots<N> piv2_{};
     std::array<State, 3> q_{};
-    std::size_t failures_ = 0;
     bool point_valid_ = false;
     bool f0_valid_ = false;
-    bool need_jacobian_ = true;
-    bool jacobian_fresh_ = false;
     bool lu_valid_ = false;
-    bool keep_lu_ = false;
     bool polynomial_valid_ = false;
-    bool first_ = true;
-    bool rejected_last_ = false;
-    bool have_accepted_ = false;
     step_count accepted_ = 0;
-    step_count rejected_ = 0;
     step_count jacobians_ = 0;
     step_count decompositions_ = 0;
     step_count iterations_ = 0;

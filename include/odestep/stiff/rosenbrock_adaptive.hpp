@@ -9,13 +9,76 @@
 
 #include "../adaptive/adaptive_rk.hpp"
 #include "../adaptive/control.hpp"
+#include "../detail/hermite.hpp"
 #include "../detail/ops.hpp"
 #include "../rk/rosenbrock.hpp"
 #include "../state.hpp"
 #include "../status.hpp"
 #include "../system.hpp"
+#include "step_control.hpp"
 
 namespace odestep {
+
+/// \brief The dense output of one accepted Rosenbrock step: the cubic Hermite interpolant (odestep::hermite_cubic,
+/// order 3 between the step's ends) through y and f at both ends. The step's attempt does not keep f at its
+/// ends, so complete(f) evaluates them once the caller needs a value inside the step: f at the end, and f at the
+/// start unless the step before was completed and ended there (then its end slope serves): at most
+/// rhs_evals_to_complete evaluations per step. The engine's accept sink:
+/// `engine.attempt(f, t, y, t_end, accepted, dense)`, then `dense.complete(f)` and `dense.at(t, u)`.
+template <class State>
+class rosenbrock_dense {
+public:
+    using state_type = State;                ///< the state
+    using value_type = value_type_t<State>;  ///< its scalar T
+    /// The most evaluations of f one complete() makes.
+    static constexpr std::size_t rhs_evals_to_complete = 2;
+
+private:
+    using T = value_type;
+
+public:
+    /// The accept sink: the step of size h from (t0, y0) to y1.
+    void operator()(T t0, T h, const State& y0, const State& y1) noexcept {
+        // f at this step's start is the completed previous step's end slope when the run is continuous
+        f0_valid_ = end_valid_ && detail::same_point_time(t0, t0_ + h_) && detail::same_values(y0, y1_);
+        if (f0_valid_) detail::assign(f0_, f1_);
+        end_valid_ = false;
+        t0_ = t0;
+        h_ = h;
+        detail::assign(y0_, y0);
+        detail::assign(y1_, y1);
+    }
+    /// Evaluates what the interpolant needs (f at the step's ends): status::non_finite when f gives NaN or Inf.
+    template <class System>
+    status complete(System& f) {
+        if (end_valid_) return status::ok;
+        if (!f0_valid_) {
+            detail::evaluate(f, t0_, static_cast<const State&>(y0_), f0_);
+            if (!detail::all_finite(f0_)) return status::non_finite;
+            f0_valid_ = true;
+        }
+        detail::evaluate(f, t0_ + h_, static_cast<const State&>(y1_), f1_);
+        if (!detail::all_finite(f1_)) return status::non_finite;
+        end_valid_ = true;
+        return status::ok;
+    }
+    /// The step's end time.
+    T t_end() const noexcept { return t0_ + h_; }
+    /// The step's size (signed).
+    T step() const noexcept { return h_; }
+    /// The interpolant at t (meant for t inside the step, after complete() returned ok).
+    void at(T t, State& out) const noexcept { hermite_cubic(y0_, f0_, y1_, f1_, h_, (t - t0_) / h_, out); }
+
+private:
+    T t0_ = T(0);
+    T h_ = T(1);
+    State y0_{};
+    State f0_{};
+    State y1_{};
+    State f1_{};
+    bool f0_valid_ = false;
+    bool end_valid_ = false;
+};
 
 /// \brief Error-controlled Rosenbrock stepping: each attempt is one step of odestep::rosenbrock<Method, State>
 /// with its embedded solution (Method a table with embedded weights: tables::rodas4, tables::rodas3), the
@@ -101,9 +164,9 @@ public:
     /// One attempted step from (t, y) toward t_end, never past it, landing exactly on t_end when the step
     /// reaches it (or within 1% of it, if that stays within max_step). Accepted: y and t advance. Rejected:
     /// y and t unchanged, the step size shrunk. Failures leave y and t as they were. Settings are the caller's
-    /// to check first. The sink is accepted for the loops' sake and not called (no dense output).
+    /// to check first. An accepted step is given to sink(t_old, h, y_old, y_new) (rosenbrock_dense).
     template <class System, class Sink = detail::no_step_sink>
-    status attempt(System& f, T& t, State& y, T t_end, bool& accepted, Sink&& = Sink{}) {
+    status attempt(System& f, T& t, State& y, T t_end, bool& accepted, Sink&& sink = Sink{}) {
         accepted = false;
         const T span = t_end - t;
         if (span == T(0)) {
@@ -152,6 +215,8 @@ public:
             err_prev_ = detail::max_value(e, T(1) / T(10000));
             after_rejection_ = false;
             failures_ = 0;
+            sink(static_cast<const T&>(t), static_cast<const T&>(h), static_cast<const State&>(y),
+                 static_cast<const State&>(y_new));
             detail::assign(y, y_new);
             t = last ? t_end : t + h;
             accepted = true;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// odestep: the course's form for stiff problems: an error-controlled engine (Radau 5(4), a Rosenbrock pair)
+// odestep: the course's form for stiff problems: an error-controlled engine (Radau 5(4), a Rosenbrock or SDIRK pair)
 // behind the fixed-step stepper interface, one grid interval per call.
 #ifndef ODESTEP_STIFF_SUBSTEPS_HPP
 #define ODESTEP_STIFF_SUBSTEPS_HPP
@@ -12,9 +12,11 @@
 #include "../state.hpp"
 #include "../status.hpp"
 #include "../stepper.hpp"
+#include "../tables/implicit_rk.hpp"
 #include "../tables/rosenbrock.hpp"
 #include "radau5.hpp"
 #include "rosenbrock_adaptive.hpp"
+#include "sdirk_adaptive.hpp"
 
 namespace odestep {
 
@@ -23,7 +25,7 @@ namespace odestep {
 /// `odestep::rodas4_substeps<State>` (a Rosenbrock pair) are its named forms.
 ///
 /// `step(f, y, t, dt)` covers one interval of the caller's grid, [t, t + dt], with as many error-controlled
-/// steps of `Engine` (odestep::radau5, odestep::rosenbrock_adaptive) as the tolerances ask for, the last
+/// steps of `Engine` (odestep::radau5, odestep::rosenbrock_adaptive, odestep::sdirk_adaptive) as the tolerances ask for, the last
 /// landing exactly on t + dt. What the engine carries (the step size; for Radau also the Jacobian, its
 /// factorizations and the collocation polynomial) goes from one interval to the next (a step shortened to
 /// land on the grid does not shrink the step size). It publishes the stepper trait set, so integrate,
@@ -120,6 +122,10 @@ using rodas4_substeps = stiff_substeps<rosenbrock_adaptive<tables::rodas4, State
 /// RODAS3 with its embedded order 2 solution, one grid interval per step.
 template <class State, std::size_t MaxAttempts = 1000>
 using rodas3_substeps = stiff_substeps<rosenbrock_adaptive<tables::rodas3, State>, MaxAttempts>;
+/// Hairer & Wanner's SDIRK4 with its embedded order 3 solution (odestep::sdirk_adaptive), one grid interval per
+/// step: one N x N factorization per step (Radau's are one real and one complex), five Newton solves.
+template <class State, std::size_t MaxAttempts = 1000>
+using sdirk4_substeps = stiff_substeps<sdirk_adaptive<tables::sdirk4, State>, MaxAttempts>;
 
 }  // namespace odestep
 

@@ -115,6 +115,41 @@ struct sdirk3 {
         {}};
 };
 
+/// \brief Hairer & Wanner's SDIRK4: five stages, every diagonal entry 1/4, order 4, L-stable, stiffly accurate
+/// (b is the last row of a), with an embedded solution of order 3 for error control; every coefficient a
+/// small rational (HW II, 2nd ed., Sec. IV.6, Table 6.5, the method (6.16); their code sdirk4.f).
+///
+///     c = (1/4, 3/4, 11/20, 1/2, 1)
+///     a = 1/4
+///         1/2        1/4
+///         17/50     -1/25       1/4
+///         371/1360  -137/2720   15/544    1/4
+///         25/24     -49/48      125/16   -85/12   1/4
+///     b = (25/24, -49/48, 125/16, -85/12, 1/4),  bhat = (59/48, -17/96, 225/32, -85/12, 0)
+///
+/// tests/tables/order_conditions_test.cpp checks both orders (all rooted trees, and that each fails the next
+/// order); tests/rk/implicit_rk_test.cpp checks its stability function against the closed form and its A- and
+/// L-stability. Stepped with error control by odestep::sdirk_adaptive (odestep::sdirk4_substeps).
+struct sdirk4 {
+    /// The method's name, for logs and tables.
+    static constexpr const char* name = "SDIRK4 (Hairer & Wanner, L-stable)";
+    static constexpr bool a_stable = true;  ///< |R(z)| <= 1 for Re z <= 0 (tested from the table)
+    static constexpr bool l_stable = true;  ///< A-stable and R(infinity) = 0 (tested from the table)
+    /// The table with its coefficients in T (one embedded weight vector, of order 3).
+    template <class T>
+    static constexpr butcher_tableau<T, 5, 1> table{
+        {{{T(1) / T(4), T(0), T(0), T(0), T(0)},
+          {T(1) / T(2), T(1) / T(4), T(0), T(0), T(0)},
+          {T(17) / T(50), T(-1) / T(25), T(1) / T(4), T(0), T(0)},
+          {T(371) / T(1360), T(-137) / T(2720), T(15) / T(544), T(1) / T(4), T(0)},
+          {T(25) / T(24), T(-49) / T(48), T(125) / T(16), T(-85) / T(12), T(1) / T(4)}}},
+        {T(25) / T(24), T(-49) / T(48), T(125) / T(16), T(-85) / T(12), T(1) / T(4)},
+        {T(1) / T(4), T(3) / T(4), T(11) / T(20), T(1) / T(2), T(1)},
+        {{{T(59) / T(48), T(-17) / T(96), T(225) / T(32), T(-85) / T(12), T(0)}}},
+        4,
+        {3}};
+};
+
 /// Radau IIA with three stages: order 5 (2s - 1), L-stable, stiffly accurate, stage order 3; the method of
 /// Hairer & Wanner's RADAU5. (Ehle 1969, Research Report CSRR 2010, Univ. Waterloo; Butcher 1964; HW II
 /// Sec. IV.5, Table 5.6, p. 74 of the 2nd edition.)
@@ -188,6 +223,7 @@ static_assert(detail::consistent_in_every_type<implicit_midpoint>(), "tables::im
 static_assert(detail::consistent_in_every_type<gauss4>(), "tables::gauss4 is not consistent");
 static_assert(detail::consistent_in_every_type<sdirk3>(), "tables::sdirk3 is not consistent");
 static_assert(detail::consistent_in_every_type<radau_iia5>(), "tables::radau_iia5 is not consistent");
+static_assert(detail::consistent_in_every_type<sdirk4>(), "tables::sdirk4 is not consistent");
 
 // clang-format on
 }  // namespace odestep::tables
