@@ -80,8 +80,7 @@ TEST_CASE("C API preflight: Newton's loop refuses a bad grid before a or the obs
     REQUIRE(capi::init<double>(&s, &verlet_preflight) == ODESTEP_OK);
     double x[1] = {1.0};
     double v[1] = {0.0};
-    CHECK(capi::integrate_newton<double>(&s, &sys, x, v, 0.0, 1.0, 0.0, watch_xv, &n, nullptr) ==
-          ODESTEP_INVALID_STEP);
+    CHECK(capi::integrate_newton<double>(&s, &sys, x, v, 0.0, 1.0, 0.0, watch_xv, &n, nullptr) == ODESTEP_INVALID_STEP);
     CHECK(capi::integrate_newton<double>(&s, &sys, x, v, std::numeric_limits<double>::infinity(), 1.0, 0.1, watch_xv,
                                          &n, nullptr) == ODESTEP_INVALID_TIME);
     CHECK(x[0] == 1.0);

@@ -84,9 +84,9 @@ TEST_CASE("preflight: the event loops refuse bad settings before an event functi
     const auto g = counted([](double, const state1& y) { return y[0] - 0.5; }, &n.g);
     const auto observe = counted([](double, const state1&) {}, &n.observed);
     state1 y{0.0};
-    const auto r = odestep::integrate(bad_substeps(), f, y, 0.0, 1.0, 0.25,
-                                      odestep::watch(odestep::make_event<state1>(g, odestep::direction::rising)),
-                                      observe);
+    const auto r =
+        odestep::integrate(bad_substeps(), f, y, 0.0, 1.0, 0.25,
+                           odestep::watch(odestep::make_event<state1>(g, odestep::direction::rising)), observe);
     CHECK(r.status == status::invalid_tolerance);
     CHECK(r.t == 0.0);
     CHECK(r.fired == 0);
@@ -98,9 +98,9 @@ TEST_CASE("preflight: the event loops refuse bad settings before an event functi
     const auto observe_xv = counted([](double, const state1&, const state1&) {}, &n.observed);
     state1 x{1.0};
     state1 v{0.0};
-    const auto rn = odestep::integrate(
-        bad_corrector(), a, x, v, 0.0, 2.0, 0.25,
-        odestep::watch(odestep::make_event<state1>(height, odestep::direction::falling)), observe_xv);
+    const auto rn = odestep::integrate(bad_corrector(), a, x, v, 0.0, 2.0, 0.25,
+                                       odestep::watch(odestep::make_event<state1>(height, odestep::direction::falling)),
+                                       observe_xv);
     CHECK(rn.status == status::invalid_tolerance);
     CHECK(x[0] == 1.0);
     CHECK(v[0] == 0.0);
@@ -110,8 +110,8 @@ TEST_CASE("preflight: the event loops refuse bad settings before an event functi
 TEST_CASE("preflight: event_stepper::start refuses bad settings before reading the event functions") {
     calls n;
     const auto height = counted([](double, const state1& x, const state1&) { return x[0]; }, &n.g);
-    auto loop = odestep::make_event_stepper(bad_corrector(),
-                                            odestep::watch(odestep::make_event<state1>(height, odestep::direction::falling)));
+    auto loop = odestep::make_event_stepper(
+        bad_corrector(), odestep::watch(odestep::make_event<state1>(height, odestep::direction::falling)));
     const state1 x{1.0};
     const state1 v{0.0};
     CHECK(loop.start(0.0, 0.1, x, v) == status::invalid_tolerance);

@@ -74,7 +74,8 @@ TEST_CASE("velocity forces: Euler-Cromer with drag is v += a(t, x, v) dt, then x
     CHECK(v[1] > -30.0);  // below the terminal speed
 }
 
-TEST_CASE("velocity forces: velocity Verlet with a(t, x, v) is kick-drift-kick with the half-step velocity, bit for bit") {
+TEST_CASE(
+    "velocity forces: velocity Verlet with a(t, x, v) is kick-drift-kick with the half-step velocity, bit for bit") {
     // A driven oscillator with quadratic drag, a = -x - k v |v| + F cos(t): the force depends on t, x and v, so
     // a kick with the wrong time, position or velocity changes the bits. The recurrence written out by hand
     // (HLW I.1.4, the Stoermer-Verlet scheme with the velocity at hand in each kick) is the independent

@@ -582,8 +582,12 @@ TEST_CASE("implicit_rk: a Newton matrix whose first pivot is zero is solved with
     using s2 = std::array<double, 2>;
     const auto linear = [](double j00) {
         return odestep::with_jacobian(
-            [j00](double, const s2& y) { return s2{j00 * y[0] + y[1], y[0]}; },
-            [j00](double, const s2&, odestep::jacobian_t<s2>& j) { j = {{{j00, 1.0}, {1.0, 0.0}}}; });
+            [j00](double, const s2& y) {
+                return s2{j00 * y[0] + y[1], y[0]};
+            },
+            [j00](double, const s2&, odestep::jacobian_t<s2>& j) {
+                j = {{{j00, 1.0}, {1.0, 0.0}}};
+            });
     };
     {
         // Backward Euler (g = 1), h = 1/2, J00 = 2: (I - h J) y1 = y0 is [[0, -1/2], [-1/2, 1]] y1 = (1, 1), so
