@@ -32,13 +32,13 @@
 #include <new>
 #include <type_traits>
 
-#include "odestep/explicit_rk.hpp"
 #include "odestep/integrate.hpp"
-#include "odestep/multistep.hpp"
-#include "odestep/newtonian.hpp"
+#include "odestep/multistep/adams.hpp"
+#include "odestep/newtonian/classic.hpp"
+#include "odestep/newtonian/splitting.hpp"
 #include "odestep/odestep.h"
+#include "odestep/rk/explicit_rk.hpp"
 #include "odestep/status.hpp"
-#include "odestep/symplectic.hpp"
 
 namespace odestep::capi {
 
@@ -244,7 +244,7 @@ struct ops_of {
 /// The caller's n values into a padded state: the first n copied, the others zero.
 template <class T>
 ODESTEP_INLINE void load_into(state<T>& s, const T* from, std::size_t n) noexcept {
-    ODESTEP_UNROLL
+    ODESTEP_UNROLL_UNLESS_SIZE
     for (std::size_t i = 0; i < max_states; ++i) s[i] = i < n ? from[i] : T(0);
 }
 template <class T>
@@ -255,7 +255,7 @@ ODESTEP_INLINE state<T> load(const T* from, std::size_t n) noexcept {
 }
 template <class T>
 ODESTEP_INLINE void store(T* to, const state<T>& s, std::size_t n) noexcept {
-    ODESTEP_UNROLL
+    ODESTEP_UNROLL_UNLESS_SIZE
     for (std::size_t i = 0; i < max_states; ++i) {
         if (i < n) to[i] = s[i];
     }
@@ -339,12 +339,12 @@ struct exact_ops {
 
     ODESTEP_INLINE static A load(const T* from) noexcept {
         A s;
-        ODESTEP_UNROLL
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t i = 0; i < N; ++i) s[i] = from[i];
         return s;
     }
     ODESTEP_INLINE static void store(T* to, const A& s) noexcept {
-        ODESTEP_UNROLL
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t i = 0; i < N; ++i) to[i] = s[i];
     }
 

@@ -77,7 +77,7 @@ public:
         State x1;
         State v1;
         const T half = dt / T(2);
-        ODESTEP_STEP_UNROLL
+        ODESTEP_STEP_UNROLL_ALWAYS
         for (std::size_t n = 0; n < x1.size(); ++n) {
             v1[n] = v[n] + acc[n] * dt;
             x1[n] = x[n] + (v[n] + v1[n]) * half;
@@ -133,7 +133,7 @@ private:
         State v1;
         State ex;
         State ev;
-        ODESTEP_STEP_UNROLL
+        ODESTEP_STEP_UNROLL_ALWAYS
         for (std::size_t n = 0; n < x1.size(); ++n) {
             x1[n] = x[n] + v_mid[n] * dt;
             v1[n] = v[n] + a_mid[n] * dt;
@@ -217,17 +217,17 @@ public:
         State x1;
         const bool continuing = next_.matches(t, dt, x);
         if (continuing) {
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = T(2) * x[n] - x_prev_[n] + a_next_[n] * dt2;
         } else {
             const State a0 = detail::acceleration(a, t, x);
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + a0[n] * (dt2 / T(2));
         }
         const State a1 = detail::acceleration(a, t + dt, x1);
         State v1;
         const T two_dt = T(2) * dt;
-        ODESTEP_STEP_UNROLL
+        ODESTEP_STEP_UNROLL_ALWAYS
         for (std::size_t n = 0; n < v1.size(); ++n) {
             const T x2 = T(2) * x1[n] - x[n] + a1[n] * dt2;  // x_{n+2}
             v1[n] = (x2 - x[n]) / two_dt;                    // v_{n+1} = (x_{n+2} - x_n) / (2 dt)
@@ -316,19 +316,19 @@ private:
         // The choice made once per step, not in every component (at -Os the loops stay loops).
         State x1;
         if (continuing) {
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + (T(4) * a0[n] - a_prev[n]) * dt2_6;
         } else {
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + a0[n] * (dt * dt / T(2));
         }
         const State a1 = detail::acceleration(a, t + dt, x1, v);  // a(t, x, v): the velocity at hand, v_n
         State v1;
         if (continuing) {
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < v1.size(); ++n) v1[n] = v[n] + (T(2) * a1[n] + T(5) * a0[n] - a_prev[n]) * dt_6;
         } else {
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < v1.size(); ++n) v1[n] = v[n] + (a0[n] + a1[n]) * (dt / T(2));
         }
         // a1 needs no test of its own: v1 is +-Inf or NaN when it is (0 Inf is NaN, for dt = 0 too).
@@ -381,7 +381,7 @@ public:
         if (continuing) {
             xp = detail::plus_scaled(x_prev_, T(2) * dt, v);  // x_p = x_{n-1} + 2 v_n dt
         } else {
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < xp.size(); ++n) xp[n] = x[n] + v[n] * dt + a0[n] * (dt * dt / T(2));
         }
         State vp = detail::plus_scaled(v, dt, a0);
@@ -392,7 +392,7 @@ public:
             State v1;
             T change = T(0);
             T size = T(0);
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < x1.size(); ++n) {
                 v1[n] = v[n] + (ap[n] + a0[n]) * half;
                 x1[n] = x[n] + (v1[n] + v[n]) * half;
