@@ -14,7 +14,7 @@
 #   --report FILE  also write the table (with its heading) to FILE (scripts/audit.sh: build/audit/)
 #   --docs FILE    replace the lines between "<!-- bench-m4f:begin -->" and "<!-- bench-m4f:end -->" in
 #                  FILE with the table (docs/cortex-m.md), if every build, run and check passed
-#   flags          e.g. -DODESTEP_STEP_FLATTEN= -DODESTEP_STEP_UNROLL= (the library's -Os form before issue 18)
+#   flags          e.g. -DODESTEP_STEP_FLATTEN= -DODESTEP_STEP_UNROLL_ALWAYS= (the library's -Os form before issue 18)
 # Environment: JOBS (parallel compiles, default 2).
 # Needs arm-none-eabi-g++ with newlib and qemu-system-arm (Debian: gcc-arm-none-eabi libnewlib-arm-none-eabi
 # libstdc++-arm-none-eabi-newlib qemu-system-arm).

@@ -21,7 +21,7 @@
 #include <utility>
 
 #include "capi_impl.hpp"
-#include "odestep/events.hpp"
+#include "odestep/events/events.hpp"
 
 namespace odestep::capi {
 

@@ -32,13 +32,13 @@
 #include <new>
 #include <type_traits>
 
-#include "odestep/explicit_rk.hpp"
 #include "odestep/integrate.hpp"
-#include "odestep/multistep.hpp"
-#include "odestep/newtonian.hpp"
+#include "odestep/multistep/adams.hpp"
+#include "odestep/newtonian/classic.hpp"
+#include "odestep/newtonian/splitting.hpp"
 #include "odestep/odestep.h"
+#include "odestep/rk/explicit_rk.hpp"
 #include "odestep/status.hpp"
-#include "odestep/symplectic.hpp"
 
 namespace odestep::capi {
 
@@ -161,11 +161,6 @@ struct caller_kept : std::false_type {};
 template <class S>
 struct caller_kept<S, std::enable_if_t<S::first_same_as_last>> : std::true_type {};
 
-template <class S, class = void>
-struct resettable : std::false_type {};
-template <class S>
-struct resettable<S, std::void_t<decltype(std::declval<S&>().reset())>> : std::true_type {};
-
 // ---- the storage: the binding, then the stepper object
 
 template <class T>
@@ -209,7 +204,7 @@ struct ops_of {
 
     static void construct(void* storage) noexcept { ::new (storage) S(); }
     static void reset(void* storage) noexcept {
-        if constexpr (resettable<S>::value) object(storage).reset();
+        if constexpr (detail::has_reset<S>::value) object(storage).reset();
     }
     static status step(void* storage, const c_rhs<T>& f, state<T>& y, T t, T dt, state<T>* e1, state<T>* e2) {
         if constexpr (S::system != system_form::first_order) {
@@ -249,7 +244,7 @@ struct ops_of {
 /// The caller's n values into a padded state: the first n copied, the others zero.
 template <class T>
 ODESTEP_INLINE void load_into(state<T>& s, const T* from, std::size_t n) noexcept {
-    ODESTEP_UNROLL
+    ODESTEP_UNROLL_UNLESS_SIZE
     for (std::size_t i = 0; i < max_states; ++i) s[i] = i < n ? from[i] : T(0);
 }
 template <class T>
@@ -260,7 +255,7 @@ ODESTEP_INLINE state<T> load(const T* from, std::size_t n) noexcept {
 }
 template <class T>
 ODESTEP_INLINE void store(T* to, const state<T>& s, std::size_t n) noexcept {
-    ODESTEP_UNROLL
+    ODESTEP_UNROLL_UNLESS_SIZE
     for (std::size_t i = 0; i < max_states; ++i) {
         if (i < n) to[i] = s[i];
     }
@@ -344,12 +339,12 @@ struct exact_ops {
 
     ODESTEP_INLINE static A load(const T* from) noexcept {
         A s;
-        ODESTEP_UNROLL
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t i = 0; i < N; ++i) s[i] = from[i];
         return s;
     }
     ODESTEP_INLINE static void store(T* to, const A& s) noexcept {
-        ODESTEP_UNROLL
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t i = 0; i < N; ++i) to[i] = s[i];
     }
 
@@ -418,7 +413,7 @@ struct exact_ops {
         } else {
             // A single step's x is a copy that lives as long as the call: a kept acceleration would be
             // matched by that copy's address alone, so it is forgotten first (the step evaluates afresh).
-            if constexpr (resettable<S>::value) s.reset();
+            if constexpr (detail::has_reset<S>::value) s.reset();
             r = s.step(a, xs, vs, t, dt);
         }
         if (r == status::ok) {
@@ -480,24 +475,6 @@ bool size_ok(std::size_t n) noexcept {
     return n >= 1 && n <= max_states;
 }
 
-/// The checks of a single step: t finite, dt finite and non-zero. The common case in two tests: (t - t) +
-/// (dt - dt) is +0 when both are finite and NaN otherwise (IEEE 754: Inf - Inf is NaN), and only NaN
-/// compares unequal to itself; then dt's bits without the sign are not all zero (dt is not +-0), one
-/// integer test.
-template <class T>
-ODESTEP_INLINE status check_step(T t, T dt) noexcept {
-    static_assert(std::numeric_limits<T>::is_iec559 && (sizeof(T) == 4 || sizeof(T) == 8));
-    using bits_t = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
-    const T d = (t - t) + (dt - dt);
-    bits_t dt_bits;
-    std::memcpy(&dt_bits, &dt, sizeof dt_bits);
-    if (ODESTEP_UNLIKELY(!(d == d)) || ODESTEP_UNLIKELY(static_cast<bits_t>(dt_bits << 1) == 0)) {
-        if (!detail::is_finite(t)) return status::invalid_time;
-        return status::invalid_step;
-    }
-    return status::ok;
-}
-
 /// The single-step functions of size n (in range): exact up to exact_states, else padded.
 template <class T>
 const sized_ops<T>* form_for(const method_ops<T>* m, std::size_t n) noexcept {
@@ -535,7 +512,7 @@ template <class T>
     const method_ops<T>* m = ops<T>(s);
     const std::size_t n = sys->n;
     if (m == nullptr || !size_ok<T>(n) || m->newtonian) return ODESTEP_INVALID_SETTING;
-    const status checked = check_step(t, dt);
+    const status checked = detail::check_step(t, dt);
     if (checked != status::ok) return to_c(checked);
     if (e1 != nullptr && (m->error_estimates < 1 || (e2 != nullptr && m->error_estimates < 2)))
         return ODESTEP_INVALID_SETTING;
@@ -553,7 +530,7 @@ ODESTEP_INLINE odestep_status step(stepper_t<T>* s, const typename c_types<T>::s
     const binding<T>& b = binding_of<T>(s);
     const std::size_t n = sys->n;
     if (ODESTEP_UNLIKELY(b.first_order_n != n || n == 0)) return step_unbound<T>(s, sys, y, t, dt, e1, e2);
-    const status checked = check_step(t, dt);
+    const status checked = detail::check_step(t, dt);
     if (ODESTEP_UNLIKELY(checked != status::ok)) return to_c(checked);
     if (e1 != nullptr) {
         const method_ops<T>* m = ops<T>(s);
@@ -569,7 +546,7 @@ template <class T>
     const method_ops<T>* m = ops<T>(s);
     const std::size_t n = sys->n;
     if (m == nullptr || !size_ok<T>(n) || !m->newtonian) return ODESTEP_INVALID_SETTING;
-    const status checked = check_step(t, dt);
+    const status checked = detail::check_step(t, dt);
     if (checked != status::ok) return to_c(checked);
     bind<T>(s, n, true, form_for(m, n));
     return binding_of<T>(s).ops.step_newton(object_of<T>(s), sys, x, v, acc, t, dt);
@@ -584,7 +561,7 @@ ODESTEP_INLINE odestep_status step_newton(stepper_t<T>* s, const typename c_type
     const binding<T>& b = binding_of<T>(s);
     const std::size_t n = sys->n;
     if (ODESTEP_UNLIKELY(b.newton_n != n || n == 0)) return step_newton_unbound<T>(s, sys, x, v, acc, t, dt);
-    const status checked = check_step(t, dt);
+    const status checked = detail::check_step(t, dt);
     if (ODESTEP_UNLIKELY(checked != status::ok)) return to_c(checked);
     return b.ops.step_newton(object_of<T>(s), sys, x, v, acc, t, dt);
 }
@@ -616,15 +593,14 @@ struct newton_adapter : stepper_defaults<state<T>> {
     void reset() const noexcept { m->reset(storage); }
 };
 
-/// A uniform-step method refuses a plan whose last step is shortened, before anything is touched (as
-/// odestep::integrate does with the trait known at compile time).
-template <class T>
-status check_uniform(const method_ops<T>* m, T t0, T t1, T dt) noexcept {
-    if (!m->uniform_steps) return status::ok;
+/// The C loops' pre-run check: odestep::integrate's (detail::preflight), with the method's uniform_steps, which
+/// only its table knows (the adapters publish false): a bad plan, or a uniform-step method's shortened last
+/// step, is refused before anything is touched.
+template <class T, class Adapter>
+status loop_preflight(const Adapter& stepper, T t0, T t1, T dt) noexcept {
     detail::grid_plan<T> plan;
     const status planned = detail::plan_run(t0, t1, dt, plan);
-    if (planned == status::ok && plan.uneven_last()) return status::step_mismatch;
-    return status::ok;  // a bad plan is reported by the loop itself
+    return detail::preflight(stepper, planned, plan, stepper.m->uniform_steps);
 }
 
 template <class T>
@@ -642,13 +618,13 @@ odestep_status integrate(stepper_t<T>* s, const typename c_types<T>::system* sys
     const method_ops<T>* m = s != nullptr ? ops<T>(s) : nullptr;
     if (m == nullptr || sys == nullptr || sys->f == nullptr || y == nullptr || !size_ok<T>(sys->n) || m->newtonian)
         return ODESTEP_INVALID_SETTING;
-    const status uniform = check_uniform(m, t0, t1, dt);
-    if (uniform != status::ok) return to_c(uniform);
+    const first_order_adapter<T> stepper{{}, m, object_of<T>(s)};
+    const status checked = loop_preflight(stepper, t0, t1, dt);
+    if (checked != status::ok) return to_c(checked);
     // The loop's object: padded, constructed afresh (an empty history), and bound, so that single steps of
     // the same n continue its history.
     bind<T>(s, sys->n, false, &m->padded);
     state<T> ys = load(y, sys->n);
-    const first_order_adapter<T> stepper{{}, m, object_of<T>(s)};
     const c_rhs<T> f{sys};
     const auto watch = [observe, octx](T t, const state<T>& at) {
         if (observe != nullptr) observe(t, at.data(), octx);
@@ -668,12 +644,12 @@ odestep_status integrate_newton(stepper_t<T>* s, const typename c_types<T>::newt
     if (m == nullptr || sys == nullptr || sys->a == nullptr || x == nullptr || v == nullptr || !size_ok<T>(sys->n) ||
         !m->newtonian)
         return ODESTEP_INVALID_SETTING;
-    const status uniform = check_uniform(m, t0, t1, dt);
-    if (uniform != status::ok) return to_c(uniform);
+    const newton_adapter<T> stepper{{}, m, object_of<T>(s)};
+    const status checked = loop_preflight(stepper, t0, t1, dt);
+    if (checked != status::ok) return to_c(checked);
     bind<T>(s, sys->n, true, &m->padded);  // as integrate's
     state<T> xs = load(x, sys->n);
     state<T> vs = load(v, sys->n);
-    const newton_adapter<T> stepper{{}, m, object_of<T>(s)};
     const c_accel<T> a{sys};
     const auto watch = [observe, octx](T t, const state<T>& px, const state<T>& pv) {
         if (observe != nullptr) observe(t, px.data(), pv.data(), octx);

@@ -160,3 +160,91 @@ TEST_CASE("stepper: a user's own stepper runs under integrate, integrate_n_steps
         CHECK(when == doctest::Approx(expected).epsilon(1e-14));
     }
 }
+
+namespace {
+
+// One stepper's published Newtonian traits, as docs/reference.md's table states them (order, a evaluations
+// per step at most, symplectic, reversible) with stages, velocity_forces and self_starting.
+template <class S>
+constexpr bool newtonian_traits_are(int order, std::size_t stages, std::size_t evals, bool symplectic, bool reversible,
+                                    bool velocity_forces) {
+    return S::order == order && S::stages == stages && S::rhs_evals_per_step == evals && S::symplectic == symplectic &&
+           S::time_reversible == reversible && S::velocity_forces == velocity_forces && S::self_starting &&
+           !S::uniform_steps && !S::implicit && S::system == odestep::system_form::newtonian &&
+           odestep::is_stepper_v<S>;
+}
+
+// Steppers that miss a requirement (detail::first_missing_trait's codes), and one that misses none.
+struct no_types {};
+struct only_order {
+    using state_type = s1;
+    using value_type = double;
+    static constexpr int order = 1;
+};
+struct no_implicit {  // every trait of the list but the last
+    using state_type = s1;
+    using value_type = double;
+    static constexpr int order = 1;
+    static constexpr std::size_t stages = 1;
+    static constexpr std::size_t rhs_evals_per_step = 1;
+    static constexpr bool error_estimate = false;
+    static constexpr int embedded_order = 0;
+    static constexpr std::size_t rhs_evals_per_error_step = 0;
+    static constexpr bool symplectic = false;
+    static constexpr bool time_reversible = false;
+    static constexpr bool self_starting = true;
+    static constexpr bool uniform_steps = false;
+    static constexpr odestep::system_form system = odestep::system_form::first_order;
+    static constexpr bool velocity_forces = false;
+};
+struct zero_order : odestep::stepper_defaults<s1> {
+    static constexpr std::size_t rhs_evals_per_step = 1;
+};
+struct complete : odestep::stepper_defaults<s1> {
+    static constexpr int order = 1;
+    static constexpr std::size_t rhs_evals_per_step = 1;
+};
+
+}  // namespace
+
+TEST_CASE("stepper: named traits set exactly the traits they name, and the Newtonian steppers publish theirs") {
+    using named = odestep::stepper_traits<s1, odestep::trait::order<3>, odestep::trait::rhs_evals_per_step<5>,
+                                          odestep::trait::time_reversible<true>,
+                                          odestep::trait::system<odestep::system_form::newtonian>>;
+    static_assert(named::order == 3 && named::rhs_evals_per_step == 5 && named::time_reversible);
+    static_assert(named::system == odestep::system_form::newtonian);
+    using defaults = odestep::stepper_defaults<s1>;  // every trait not named keeps its default
+    static_assert(named::stages == defaults::stages && named::symplectic == defaults::symplectic);
+    static_assert(named::self_starting == defaults::self_starting && named::implicit == defaults::implicit);
+    static_assert(named::error_estimate == defaults::error_estimate && named::uniform_steps == defaults::uniform_steps);
+    static_assert(odestep::check_stepper<named>());
+
+    static_assert(newtonian_traits_are<odestep::newtonian_euler<s2>>(1, 1, 1, false, false, true));
+    static_assert(newtonian_traits_are<odestep::newtonian_midpoint<s2>>(1, 1, 1, false, false, true));
+    static_assert(newtonian_traits_are<odestep::newtonian_euler_richardson<s2>>(2, 2, 2, false, false, true));
+    static_assert(newtonian_traits_are<odestep::half_step<s2>>(2, 1, 2, true, true, false));
+    static_assert(newtonian_traits_are<odestep::leapfrog_position_form<s2>>(2, 1, 2, true, true, false));
+    static_assert(newtonian_traits_are<odestep::beeman<s2>>(2, 1, 2, false, false, true));
+    static_assert(newtonian_traits_are<odestep::predictor_corrector<s2>>(2, 2, 17, false, false, true));
+    // Boris, both forms, from the one block: second order, one field evaluation, reversible and volume
+    // preserving, not symplectic, not self starting (docs/reference.md, the charged particle).
+    using boris = odestep::boris<s3>;
+    using relativistic = odestep::boris_relativistic<s3>;
+    static_assert(boris::order == 2 && boris::rhs_evals_per_step == 1 && boris::time_reversible && !boris::symplectic);
+    static_assert(boris::volume_preserving && !boris::self_starting);
+    static_assert(boris::system == odestep::system_form::charged_particle);
+    static_assert(relativistic::order == 2 && relativistic::rhs_evals_per_step == 1 && relativistic::time_reversible);
+    static_assert(!relativistic::symplectic && relativistic::volume_preserving && !relativistic::self_starting);
+    static_assert(relativistic::system == odestep::system_form::charged_particle);
+    CHECK(odestep::is_stepper_v<boris>);
+}
+
+TEST_CASE("stepper: a missing trait is named by the code the trait list gives it, in the list's order") {
+    namespace d = odestep::detail;
+    static_assert(d::first_missing_trait<no_types>() == d::trait_types);
+    static_assert(d::first_missing_trait<only_order>() == d::trait_missing_stages);
+    static_assert(d::first_missing_trait<no_implicit>() == d::trait_missing_implicit);
+    static_assert(d::first_missing_trait<zero_order>() == d::trait_order_below_one);
+    static_assert(d::first_missing_trait<complete>() == d::trait_ok);
+    CHECK(!odestep::is_stepper_v<no_implicit>);
+}

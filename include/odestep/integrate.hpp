@@ -9,6 +9,7 @@
 
 #include "detail/grid_clock.hpp"
 #include "detail/ops.hpp"
+#include "detail/preflight.hpp"
 #include "state.hpp"
 #include "status.hpp"
 #include "stepper.hpp"
@@ -101,34 +102,6 @@ run_outcome<T> run_grid(const grid_plan<T>& plan, Advance&& advance, Observer& o
     return {status::ok, plan.t_end, plan.steps, no_event};
 }
 
-/// A stepper that needs every step to be dt (uniform_steps) cannot take a plan's shortened last step:
-/// status::step_mismatch, before anything is touched.
-template <class Stepper, class T>
-constexpr status fits_plan(const grid_plan<T>& plan) noexcept {
-    if constexpr (std::remove_reference_t<Stepper>::uniform_steps) {
-        if (plan.uneven_last()) return status::step_mismatch;
-    }
-    (void)plan;
-    return status::ok;
-}
-
-/// A stepper with settings of its own (predictor_corrector's tolerance) may publish
-/// `status settings_status() const`: the loops ask it before anything is observed or evaluated, so that a
-/// bad setting is refused as a bad argument is. A stepper without one has nothing to check.
-template <class S, class = void>
-struct has_settings_status : std::false_type {};
-template <class S>
-struct has_settings_status<S, std::void_t<decltype(std::declval<const S&>().settings_status())>> : std::true_type {};
-template <class Stepper>
-constexpr status check_settings(const Stepper& stepper) noexcept {
-    if constexpr (has_settings_status<Stepper>::value) {
-        return stepper.settings_status();
-    } else {
-        (void)stepper;
-        return status::ok;
-    }
-}
-
 // integrate and integrate_n_steps for a first-order state (y) or a Newtonian pair (x, v): the stepper is
 // called as step(f, states..., t, h) and the observer as observe(t, states...).
 template <system_form Form, class T, class Stepper, class System, class Observer, class... States>
@@ -137,8 +110,7 @@ integrate_result<T> drive(Stepper& stepper, System& f, Observer& observe, status
     if constexpr (!stepper_fits<Stepper, Form>()) {
         return {status::invalid_step, plan.clock.t0, 0};  // not reached: stepper_fits stopped the compilation
     } else {
-        if (planned == status::ok) planned = fits_plan<Stepper>(plan);
-        if (planned == status::ok) planned = check_settings(stepper);
+        planned = preflight(stepper, planned, plan);
         if (planned != status::ok) return {planned, plan.clock.t0, 0};
         const run_outcome<T> r = run_grid(
             plan,

@@ -107,137 +107,173 @@ struct stepper_defaults {
     static constexpr bool checks_finiteness = true;
 };
 
+/// THE trait list: every trait of stepper_defaults that a stepper must publish, with its type, in the order
+/// odestep::check_stepper reports a missing one. The detectors, the diagnostics, the named traits
+/// (odestep::trait, odestep::stepper_traits) are all generated from it.
+#define ODESTEP_DETAIL_STEPPER_TRAITS(X)     \
+    X(order, int)                            \
+    X(stages, std::size_t)                   \
+    X(rhs_evals_per_step, std::size_t)       \
+    X(error_estimate, bool)                  \
+    X(embedded_order, int)                   \
+    X(rhs_evals_per_error_step, std::size_t) \
+    X(symplectic, bool)                      \
+    X(time_reversible, bool)                 \
+    X(self_starting, bool)                   \
+    X(uniform_steps, bool)                   \
+    X(system, odestep::system_form)          \
+    X(velocity_forces, bool)                 \
+    X(implicit, bool)
+
+/// \brief A trait's value by name, for odestep::stepper_traits: `trait::order<2>`, `trait::symplectic<true>`,
+/// one template per trait of stepper_defaults (`order`, `stages`, `rhs_evals_per_step`, `error_estimate`,
+/// `embedded_order`, `rhs_evals_per_error_step`, `symplectic`, `time_reversible`, `self_starting`,
+/// `uniform_steps`, `system`, `velocity_forces`, `implicit`), each with a member `value`.
+namespace trait {
+#define ODESTEP_DETAIL_TRAIT_TAG(name, type) \
+    template <type V>                        \
+    struct name {                            \
+        static constexpr type value = V;     \
+    };
+ODESTEP_DETAIL_STEPPER_TRAITS(ODESTEP_DETAIL_TRAIT_TAG)
+#undef ODESTEP_DETAIL_TRAIT_TAG
+}  // namespace trait
+
 namespace detail {
 
 template <class...>
 inline constexpr bool always_false = false;
 
-#define ODESTEP_DETAIL_HAS_MEMBER(name)     \
-    template <class S, class = void>        \
-    struct has_##name : std::false_type {}; \
-    template <class S>                      \
-    struct has_##name<S, std::void_t<decltype(S::name)>> : std::true_type {};
-
-ODESTEP_DETAIL_HAS_MEMBER(order)
-ODESTEP_DETAIL_HAS_MEMBER(stages)
-ODESTEP_DETAIL_HAS_MEMBER(rhs_evals_per_step)
-ODESTEP_DETAIL_HAS_MEMBER(error_estimate)
-ODESTEP_DETAIL_HAS_MEMBER(embedded_order)
-ODESTEP_DETAIL_HAS_MEMBER(rhs_evals_per_error_step)
-ODESTEP_DETAIL_HAS_MEMBER(symplectic)
-ODESTEP_DETAIL_HAS_MEMBER(time_reversible)
-ODESTEP_DETAIL_HAS_MEMBER(self_starting)
-ODESTEP_DETAIL_HAS_MEMBER(uniform_steps)
-ODESTEP_DETAIL_HAS_MEMBER(system)
-ODESTEP_DETAIL_HAS_MEMBER(velocity_forces)
-ODESTEP_DETAIL_HAS_MEMBER(implicit)
-#undef ODESTEP_DETAIL_HAS_MEMBER
+// has_<trait>: S publishes the trait; names_<trait>: N is odestep::trait::<trait><V> (is), and V (v).
+#define ODESTEP_DETAIL_TRAIT_DETECTORS(name, type)                            \
+    template <class S, class = void>                                          \
+    struct has_##name : std::false_type {};                                   \
+    template <class S>                                                        \
+    struct has_##name<S, std::void_t<decltype(S::name)>> : std::true_type {}; \
+    template <class N>                                                        \
+    struct names_##name {                                                     \
+        static constexpr bool is = false;                                     \
+        static constexpr type v{};                                            \
+    };                                                                        \
+    template <type V>                                                         \
+    struct names_##name<::odestep::trait::name<V>> {                          \
+        static constexpr bool is = true;                                      \
+        static constexpr type v = V;                                          \
+    };
+ODESTEP_DETAIL_STEPPER_TRAITS(ODESTEP_DETAIL_TRAIT_DETECTORS)
+#undef ODESTEP_DETAIL_TRAIT_DETECTORS
 
 template <class S, class = void>
 struct has_state_type : std::false_type {};
 template <class S>
 struct has_state_type<S, std::void_t<typename S::state_type, typename S::value_type>> : std::true_type {};
 
-// Which requirement a stepper type misses first (0: none). The codes are diagnose()'s.
+// What diagnose() reports: the types, one code per trait of the list (trait_missing_<name>), the values.
+enum trait_code : int {
+    trait_ok = 0,
+    trait_types,
+    trait_state_not_array,
+#define ODESTEP_DETAIL_TRAIT_CODE(name, type) trait_missing_##name,
+    ODESTEP_DETAIL_STEPPER_TRAITS(ODESTEP_DETAIL_TRAIT_CODE)
+#undef ODESTEP_DETAIL_TRAIT_CODE
+        trait_order_below_one,
+    trait_evals_below_one,
+    trait_estimate_incomplete
+};
+
+// The first trait of the list that S does not publish (trait_ok: none).
+template <class S>
+constexpr int first_absent_trait() noexcept {
+    int code = trait_ok;
+#define ODESTEP_DETAIL_TRAIT_ABSENT(name, type) \
+    if (code == trait_ok && !has_##name<S>::value) code = trait_missing_##name;
+    ODESTEP_DETAIL_STEPPER_TRAITS(ODESTEP_DETAIL_TRAIT_ABSENT)
+#undef ODESTEP_DETAIL_TRAIT_ABSENT
+    return code;
+}
+
+// Which requirement a stepper type misses first (trait_ok: none).
 template <class S>
 constexpr int first_missing_trait() noexcept {
     if constexpr (!has_state_type<S>::value)
-        return 1;
+        return trait_types;
     else if constexpr (!is_state_v<typename S::state_type>)
-        return 18;
+        return trait_state_not_array;
     else if constexpr (!std::is_same_v<typename S::value_type,
                                        typename state_traits<typename S::state_type>::value_type>)
-        return 1;
-    else if constexpr (!has_order<S>::value)
-        return 2;
-    else if constexpr (!has_stages<S>::value)
-        return 3;
-    else if constexpr (!has_rhs_evals_per_step<S>::value)
-        return 4;
-    else if constexpr (!has_error_estimate<S>::value)
-        return 5;
-    else if constexpr (!has_embedded_order<S>::value)
-        return 6;
-    else if constexpr (!has_rhs_evals_per_error_step<S>::value)
-        return 7;
-    else if constexpr (!has_symplectic<S>::value)
-        return 8;
-    else if constexpr (!has_time_reversible<S>::value)
-        return 9;
-    else if constexpr (!has_self_starting<S>::value)
-        return 10;
-    else if constexpr (!has_uniform_steps<S>::value)
-        return 11;
-    else if constexpr (!has_system<S>::value)
-        return 12;
-    else if constexpr (!has_velocity_forces<S>::value)
-        return 13;
-    else if constexpr (!has_implicit<S>::value)
-        return 14;
+        return trait_types;
+    else if constexpr (first_absent_trait<S>() != trait_ok)
+        return first_absent_trait<S>();
     else if constexpr (!(S::order >= 1))
-        return 15;
+        return trait_order_below_one;
     else if constexpr (!(S::rhs_evals_per_step >= 1))
-        return 16;
+        return trait_evals_below_one;
     else if constexpr (S::error_estimate && !(S::embedded_order >= 1 && S::rhs_evals_per_error_step >= 1))
-        return 17;
+        return trait_estimate_incomplete;
     else
-        return 0;
+        return trait_ok;
 }
 
 template <class S>
 constexpr bool diagnose() noexcept {
     constexpr int code = first_missing_trait<S>();
-    // 18: the state is not a std::array<T, N>; state_traits says so, in one line.
-    if constexpr (code == 18) return sizeof(state_traits<typename S::state_type>) == 0;
-    static_assert(code != 1,
+    // The state is not a std::array<T, N>: state_traits says so, in one line.
+    if constexpr (code == trait_state_not_array) return sizeof(state_traits<typename S::state_type>) == 0;
+    static_assert(code != trait_types,
                   "odestep: a stepper needs `using state_type = std::array<T, N>;` and `using value_type = T;`");
-    static_assert(
-        code != 2,
-        "odestep: a stepper needs `static constexpr int order` (derive from odestep::stepper_defaults<State>)");
-    static_assert(code != 3,
-                  "odestep: a stepper needs `static constexpr std::size_t stages` (derive from "
-                  "odestep::stepper_defaults<State>)");
-    static_assert(code != 4,
-                  "odestep: a stepper needs `static constexpr std::size_t rhs_evals_per_step` (derive from "
-                  "odestep::stepper_defaults<State>)");
-    static_assert(code != 5,
-                  "odestep: a stepper needs `static constexpr bool error_estimate` (derive from "
-                  "odestep::stepper_defaults<State>)");
-    static_assert(code != 6,
-                  "odestep: a stepper needs `static constexpr int embedded_order` (derive from "
-                  "odestep::stepper_defaults<State>)");
-    static_assert(code != 7,
-                  "odestep: a stepper needs `static constexpr std::size_t rhs_evals_per_error_step` (derive from "
-                  "odestep::stepper_defaults<State>)");
-    static_assert(
-        code != 8,
-        "odestep: a stepper needs `static constexpr bool symplectic` (derive from odestep::stepper_defaults<State>)");
-    static_assert(code != 9,
-                  "odestep: a stepper needs `static constexpr bool time_reversible` (derive from "
-                  "odestep::stepper_defaults<State>)");
-    static_assert(code != 10,
-                  "odestep: a stepper needs `static constexpr bool self_starting` (derive from "
-                  "odestep::stepper_defaults<State>)");
-    static_assert(code != 11,
-                  "odestep: a stepper needs `static constexpr bool uniform_steps` (derive from "
-                  "odestep::stepper_defaults<State>)");
-    static_assert(code != 12,
-                  "odestep: a stepper needs `static constexpr odestep::system_form system` (derive from "
-                  "odestep::stepper_defaults<State>)");
-    static_assert(code != 13,
-                  "odestep: a stepper needs `static constexpr bool velocity_forces` (derive from "
-                  "odestep::stepper_defaults<State>)");
-    static_assert(
-        code != 14,
-        "odestep: a stepper needs `static constexpr bool implicit` (derive from odestep::stepper_defaults<State>)");
-    static_assert(code != 15, "odestep: a stepper's `order` must be at least 1");
-    static_assert(code != 16, "odestep: a stepper's `rhs_evals_per_step` must be at least 1");
-    static_assert(code != 17,
+#define ODESTEP_DETAIL_TRAIT_MESSAGE(name, type)                                                              \
+    static_assert(code != trait_missing_##name, "odestep: a stepper needs `static constexpr " #type " " #name \
+                                                "` (derive from odestep::stepper_defaults<State>)");
+    ODESTEP_DETAIL_STEPPER_TRAITS(ODESTEP_DETAIL_TRAIT_MESSAGE)
+#undef ODESTEP_DETAIL_TRAIT_MESSAGE
+    static_assert(code != trait_order_below_one, "odestep: a stepper's `order` must be at least 1");
+    static_assert(code != trait_evals_below_one, "odestep: a stepper's `rhs_evals_per_step` must be at least 1");
+    static_assert(code != trait_estimate_incomplete,
                   "odestep: a stepper with `error_estimate` states `embedded_order` and `rhs_evals_per_error_step`");
-    return code == 0;
+    return code == trait_ok;
+}
+
+// The value Named... give a trait (Names: its names_<trait>), else `fallback`.
+template <template <class> class Names, class Type, class... Named>
+constexpr Type named_or(Type fallback) noexcept {
+    Type r = fallback;
+    ((r = Names<Named>::is ? Names<Named>::v : r), ...);
+    return r;
+}
+
+// N names a trait of the list, and Named... name each trait at most once.
+template <class N>
+constexpr bool is_trait_name() noexcept {
+    bool r = false;
+#define ODESTEP_DETAIL_TRAIT_IS_NAME(name, type) r = r || names_##name<N>::is;
+    ODESTEP_DETAIL_STEPPER_TRAITS(ODESTEP_DETAIL_TRAIT_IS_NAME)
+#undef ODESTEP_DETAIL_TRAIT_IS_NAME
+    return r;
+}
+template <class... Named>
+constexpr bool each_trait_once() noexcept {
+    bool r = true;
+#define ODESTEP_DETAIL_TRAIT_ONCE(name, type) r = r && (0 + ... + (names_##name<Named>::is ? 1 : 0)) <= 1;
+    ODESTEP_DETAIL_STEPPER_TRAITS(ODESTEP_DETAIL_TRAIT_ONCE)
+#undef ODESTEP_DETAIL_TRAIT_ONCE
+    return r;
 }
 
 }  // namespace detail
+
+/// \brief stepper_defaults with the traits `Named...` (odestep::trait) set by name, each at most once:
+/// `stepper_traits<State, trait::order<2>, trait::symplectic<true>>` is stepper_defaults<State> with
+/// `order` 2 and `symplectic` true. A stepper derives from it instead of positional template arguments.
+template <class State, class... Named>
+struct stepper_traits : stepper_defaults<State> {
+    static_assert((detail::is_trait_name<Named>() && ...),
+                  "odestep: stepper_traits takes odestep::trait::<name><value> arguments only");
+    static_assert(detail::each_trait_once<Named...>(), "odestep: stepper_traits names each trait at most once");
+#define ODESTEP_DETAIL_NAMED_TRAIT(name, type) \
+    static constexpr type name = detail::named_or<detail::names_##name, type, Named...>(stepper_defaults<State>::name);
+    ODESTEP_DETAIL_STEPPER_TRAITS(ODESTEP_DETAIL_NAMED_TRAIT)
+#undef ODESTEP_DETAIL_NAMED_TRAIT
+};
 
 /// True when S publishes the whole trait set with values that make sense (a type, never an error).
 template <class S>

@@ -584,3 +584,37 @@ TEST_CASE("implicit_rk: Radau IIA 5's estimating step gives RADAU5's estimate, o
     CHECK(slope > 3.7);
     CHECK(slope < 4.3);
 }
+
+TEST_CASE("implicit_rk: a Newton matrix whose first pivot is zero is solved with a row interchange") {
+    // y' = J y with J = [[1/(h g), 1], [1, 0]] (g the stage's diagonal coefficient): the iteration matrix
+    // I - h g J has a zero in its top-left corner, so LU without pivoting divides by zero, while with partial
+    // pivoting it is an ordinary, well-conditioned 2x2 system. The expected values are that system solved by
+    // hand (Cramer's rule; every number is exact in binary), each in the block below.
+    using s2 = std::array<double, 2>;
+    const auto linear = [](double j00) {
+        return odestep::with_jacobian(
+            [j00](double, const s2& y) {
+                return s2{j00 * y[0] + y[1], y[0]};
+            },
+            [j00](double, const s2&, odestep::jacobian_t<s2>& j) {
+                j = {{{j00, 1.0}, {1.0, 0.0}}};
+            });
+    };
+    {
+        // Backward Euler (g = 1), h = 1/2, J00 = 2: (I - h J) y1 = y0 is [[0, -1/2], [-1/2, 1]] y1 = (1, 1), so
+        // y1[1] = -2 and y1[0] = -2 (1 - y1[1]) = -6.
+        s2 y{1.0, 1.0};
+        CHECK(odestep::backward_euler<s2>{}.step(linear(2.0), y, 0.0, 0.5) == odestep::status::ok);
+        CHECK(y[0] == doctest::Approx(-6.0).epsilon(1e-12));
+        CHECK(y[1] == doctest::Approx(-2.0).epsilon(1e-12));
+    }
+    {
+        // The trapezoid (g = 1/2), h = 1/2, J00 = 4: (I - h/2 J) y1 = (I + h/2 J) y0 is
+        // [[0, -1/4], [-1/4, 1]] y1 = (1, 1) + (1/4) (5, 1) = (9/4, 5/4), so y1[1] = -9 and
+        // y1[0] = -4 (5/4 - y1[1]) = -41.
+        s2 y{1.0, 1.0};
+        CHECK(odestep::trapezoid<s2>{}.step(linear(4.0), y, 0.0, 0.5) == odestep::status::ok);
+        CHECK(y[0] == doctest::Approx(-41.0).epsilon(1e-12));
+        CHECK(y[1] == doctest::Approx(-9.0).epsilon(1e-12));
+    }
+}

@@ -15,6 +15,7 @@
 #include "../config.hpp"
 #include "../detail/grid_clock.hpp"
 #include "../detail/ops.hpp"
+#include "../detail/preflight.hpp"
 #include "../detail/stage_loop.hpp"
 #include "../state.hpp"
 #include "../status.hpp"
@@ -331,11 +332,9 @@ private:
 namespace detail {
 // THE interval covered by error-controlled substeps, for adaptive_substeps and the stiff engines' substep form
 // (stiff/substeps.hpp): y <- y(t + dt) in at most max_attempts attempts of `engine`, the last landing exactly on
-// t + dt; on any status but ok y is the state it was given. The settings were checked by the caller.
+// t + dt; on any status but ok y is the state it was given. The caller's preflight checked the settings, t and dt.
 template <class Engine, class System, class State, class T>
 status cover_interval(Engine& engine, System& f, State& y, T t, T dt, std::size_t max_attempts) {
-    if (!is_finite(t)) return status::invalid_time;
-    if (!is_finite(dt) || dt == T(0)) return status::invalid_step;
     const T t_end = t + dt;
     if (!is_finite(t_end)) return status::invalid_time;
     // dt below the rounding of t: the interval is empty and y(t + dt) is y, evaluated nowhere; ok only for
@@ -431,7 +430,7 @@ public:
     /// t + dt not finite), invalid_step (dt zero or not finite), non_finite, step_too_small, substep_limit.
     template <class System>
     [[nodiscard]] status step(System&& f, State& y, T t, T dt) {
-        const status s = settings_status();
+        const status s = detail::preflight(*this, t, dt);
         if (s != status::ok) return s;
         return detail::cover_interval(engine_, f, y, t, dt, max_substeps_);
     }

@@ -9,6 +9,7 @@
 
 #include "../detail/grid_clock.hpp"
 #include "../detail/ops.hpp"
+#include "../detail/preflight.hpp"
 #include "../integrate.hpp"
 #include "../state.hpp"
 #include "../status.hpp"
@@ -29,12 +30,6 @@ struct has_solution_tag<T, std::void_t<typename T::solution_tag>> : std::true_ty
 template <class T>
 inline constexpr bool is_solution_v = has_solution_tag<std::remove_cv_t<std::remove_reference_t<T>>>::value;
 
-template <class T>
-constexpr status check_span(T t0, T t1) noexcept {
-    if (!is_finite(t0) || !is_finite(t1) || !is_finite(t1 - t0)) return status::invalid_time;
-    return status::ok;
-}
-
 // THE free-running loop, for every engine with settings_status() and attempt(f, t, y, t_end, accepted)
 // (adaptive_rk, and the stiff engines of stiff/): observe (t0, y), then attempts until t1 or the cap. An empty
 // run (t0 == t1) ends as integrate()'s does (integrate.hpp, run_grid): ok if y is finite, else non_finite at t0.
@@ -42,9 +37,7 @@ template <class Engine, class State, class System, class Observer>
 integrate_result<value_type_t<State>> free_running(Engine& engine, System& f, State& y, value_type_t<State> t0,
                                                    value_type_t<State> t1, Observer& observe, step_count max_attempts) {
     using T = value_type_t<State>;
-    status s = engine.settings_status();
-    if (s == status::ok && max_attempts == 0) s = status::invalid_setting;
-    if (s == status::ok) s = check_span(t0, t1);
+    status s = preflight(engine, t0, t1, max_attempts);
     if (s != status::ok) return {s, t0, 0};
     observe(t0, static_cast<const State&>(y));
     if (t0 == t1 && !all_finite(y)) return {status::non_finite, t0, 0};
@@ -63,18 +56,15 @@ integrate_result<value_type_t<State>> free_running(Engine& engine, System& f, St
     return {status::ok, t, accepted};
 }
 
-// What integrate_times checks before anything is evaluated (the same for every engine): the settings, the cap,
-// t0, and the times (finite, in the run's direction, never going back). ok with t1 the last time; with no
-// times, ok and `empty` set.
+// What integrate_times checks before anything is evaluated (the same for every engine): the run's preflight
+// over [t0, the last time] (over [t0, t0] with no times), then the times (finite, in the run's direction,
+// never going back). ok with t1 the last time (t0 with no times).
 template <class Engine, class T, class Times>
 status check_times(const Engine& engine, T t0, const Times& times, step_count max_attempts, T& t1) noexcept {
-    status s = engine.settings_status();
-    if (s == status::ok && max_attempts == 0) s = status::invalid_setting;
-    if (s == status::ok && !is_finite(t0)) s = status::invalid_time;
     const std::size_t count = times.size();
+    t1 = count == 0 ? t0 : times[count - 1];
+    const status s = preflight(engine, t0, t1, max_attempts);
     if (s != status::ok || count == 0) return s;
-    t1 = times[count - 1];
-    if (check_span(t0, t1) != status::ok) return status::invalid_time;
     const bool forward = !(t1 < t0);
     T previous = t0;
     for (std::size_t i = 0; i < count; ++i) {

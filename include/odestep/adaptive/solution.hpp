@@ -9,6 +9,7 @@
 #include <cstddef>
 
 #include "../detail/ops.hpp"
+#include "../detail/preflight.hpp"
 #include "../integrate.hpp"
 #include "../state.hpp"
 #include "../status.hpp"
@@ -136,9 +137,7 @@ template <class Method, class State, std::size_t Capacity, class System>
                                                                        solution<Method, State, Capacity>& sol,
                                                                        step_count max_attempts = default_max_attempts) {
     using T = value_type_t<State>;
-    status s = engine.settings_status();
-    if (s == status::ok && max_attempts == 0) s = status::invalid_setting;
-    if (s == status::ok) s = detail::check_span(t0, t1);
+    status s = detail::preflight(engine, t0, t1, max_attempts);
     if (s != status::ok) return {s, t0, 0};
     sol.start(t0, y);
     if (t0 == t1 && !detail::all_finite(y)) return {status::non_finite, t0, 0};  // an empty run, as integrate()
@@ -192,10 +191,9 @@ public:
     /// The state at t_out into y_out (see the class).
     template <class System>
     [[nodiscard]] status advance_to(System&& f, T t_out, State& y_out) {
-        status s = engine_.settings_status();
-        if (s == status::ok && max_attempts_ == 0) s = status::invalid_setting;
+        status s = detail::preflight(engine_, t0_, t1_, max_attempts_);
         if (s != status::ok) return s;
-        if (detail::check_span(t0_, t1_) != status::ok || !detail::is_finite(t_out)) return status::invalid_time;
+        if (!detail::is_finite(t_out)) return status::invalid_time;
         const bool forward = !(t1_ < t0_);
         const auto before = [forward](T a, T b) { return forward ? a < b : a > b; };
         if (before(t_out, last_out_) || before(t1_, t_out)) return status::invalid_time;

@@ -5,7 +5,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include "../config.hpp"
 #include "../status.hpp"
@@ -66,6 +68,29 @@ ODESTEP_INLINE constexpr step_count count_of(T x) noexcept {
     }
 }
 
+/// THE check of a step's time and size, for every loop and the C API: t finite (else status::invalid_time), dt
+/// finite and not zero (else status::invalid_step). The common case is two tests: (t - t) + (dt - dt) is +0
+/// when both are finite and NaN otherwise (IEEE 754: Inf - Inf is NaN), and only NaN compares unequal to
+/// itself; then dt is not +-0, for IEEE float and double one integer test of dt's bits without the sign.
+template <class T>
+ODESTEP_INLINE status check_step(T t, T dt) noexcept {
+    const T d = (t - t) + (dt - dt);
+    bool zero = false;
+    if constexpr (std::numeric_limits<T>::is_iec559 && (sizeof(T) == 4 || sizeof(T) == 8)) {
+        using bits_t = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+        bits_t dt_bits;
+        std::memcpy(&dt_bits, &dt, sizeof dt_bits);
+        zero = static_cast<bits_t>(dt_bits << 1) == 0;
+    } else {
+        zero = dt == T(0);
+    }
+    if (ODESTEP_UNLIKELY(!(d == d)) || ODESTEP_UNLIKELY(zero)) {
+        if (!is_finite(t)) return status::invalid_time;
+        return status::invalid_step;
+    }
+    return status::ok;
+}
+
 /// The times of a fixed-step run: t_n = t0 + n dt, computed from the integer n every time and never as a
 /// running sum (in float, t += 1e-3 reaches 991.14 instead of 1000 after 10^6 steps).
 template <class T>
@@ -76,12 +101,8 @@ struct grid_clock {
     /// t0 + n dt.
     ODESTEP_INLINE constexpr T time(step_count n) const noexcept { return t0 + count_value<T>(n) * dt; }
 
-    /// t0 finite, dt finite and not zero.
-    constexpr status check() const noexcept {
-        if (!is_finite(t0)) return status::invalid_time;
-        if (!is_finite(dt) || dt == T(0)) return status::invalid_step;
-        return status::ok;
-    }
+    /// t0 finite, dt finite and not zero (check_step).
+    status check() const noexcept { return check_step(t0, dt); }
 };
 
 /// How far the computed grid times may be from the exact t0 + n dt near [t0, t1]: each is rounded in the
@@ -119,10 +140,11 @@ struct grid_plan {
 /// (then the last step is shortened to end on t1): no step is longer than dt by more than the grid's
 /// rounding, and none is a sliver. Bad arguments give their status and an empty plan.
 template <class T>
-constexpr status plan_run(T t0, T t1, T dt, grid_plan<T>& plan) noexcept {
+status plan_run(T t0, T t1, T dt, grid_plan<T>& plan) noexcept {
     plan = grid_plan<T>{grid_clock<T>{t0, dt}, 0, t0, dt};
-    if (!is_finite(t0) || !is_finite(t1) || !is_finite(t1 - t0)) return status::invalid_time;
-    if (!is_finite(dt) || dt == T(0)) return status::invalid_step;
+    if (!is_finite(t1) || !is_finite(t1 - t0)) return status::invalid_time;  // a NaN or Inf t0 too
+    const status checked = check_step(t0, dt);
+    if (checked != status::ok) return checked;
     const T span = t1 - t0;
     if (span == T(0)) {  // no step; the run still ends on t1 itself (from -0.0 to +0.0: +0.0)
         plan.t_end = t1;
@@ -174,7 +196,7 @@ constexpr status plan_run(T t0, T t1, T dt, grid_plan<T>& plan) noexcept {
 /// Plans exactly n steps of dt from t0, ending on t0 + n dt. Every time of the run must be finite
 /// (status::invalid_time otherwise: t0 + n dt overflows).
 template <class T>
-constexpr status plan_steps(T t0, T dt, step_count n, grid_plan<T>& plan) noexcept {
+status plan_steps(T t0, T dt, step_count n, grid_plan<T>& plan) noexcept {
     plan = grid_plan<T>{grid_clock<T>{t0, dt}, 0, t0, dt};
     const status s = plan.clock.check();
     if (s != status::ok) return s;

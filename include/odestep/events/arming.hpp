@@ -9,21 +9,12 @@
 #include <type_traits>
 #include <utility>
 
+#include "../detail/preflight.hpp"  // has_reset, reset_if_any
 #include "event.hpp"
 
 namespace odestep {
 
 namespace detail {
-
-template <class S, class = void>
-struct has_reset : std::false_type {};
-template <class S>
-struct has_reset<S, std::void_t<decltype(std::declval<S&>().reset())>> : std::true_type {};
-
-template <class S>
-constexpr void reset_if_any(S& s) noexcept {
-    if constexpr (has_reset<S>::value) s.reset();
-}
 
 template <class T>
 constexpr bool crosses(direction d, T before, T after) noexcept {

@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "../detail/grid_clock.hpp"
+#include "../detail/preflight.hpp"
 #include "../integrate.hpp"
 #include "../state.hpp"
 #include "../status.hpp"
@@ -35,7 +36,7 @@ event_integrate_result<T, Set::size> drive_events_on(Stepper& stepper, System& f
         }
         return r;
     };
-    if (planned == status::ok) planned = fits_plan<Stepper>(plan);
+    planned = preflight(stepper, planned, plan);
     if (planned == status::ok)
         planned = limits_status<Stepper, typename Set::finder, value_type_t<State>>(Set::size, set.limits);
     if (planned != status::ok) return finish(planned, plan.clock.t0, 0, no_event);

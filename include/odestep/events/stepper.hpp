@@ -12,6 +12,7 @@
 
 #include "../detail/grid_clock.hpp"
 #include "../detail/ops.hpp"
+#include "../detail/preflight.hpp"
 #include "../state.hpp"
 #include "../status.hpp"
 #include "arming.hpp"
@@ -63,12 +64,14 @@ public:
 
     /// Starts the clock at t0 with ticks of dt and reads every event function on the initial state. An event
     /// whose function is zero there (or whose root lies within its tolerance after t0) does not fire at t0.
-    /// Limits whose work bounds do not fit std::size_t: status::invalid_setting, nothing touched.
+    /// Before anything is evaluated (detail::preflight): t0 and dt as the grid clock checks them, the stepper's
+    /// settings (settings_status()), then limits whose work bounds do not fit std::size_t
+    /// (status::invalid_setting); on any of them nothing is touched.
     template <class... States>
     [[nodiscard]] status start(value_type t0, value_type dt, const States&... y) {
         static_assert(sizeof...(States) == arity, "odestep: start(t0, dt, y) (Newtonian: start(t0, dt, x, v))");
         const detail::grid_clock<value_type> clock{t0, dt};
-        const status checked = clock.check();
+        const status checked = detail::preflight(stepper_, t0, dt);
         if (checked != status::ok) return checked;
         const status limited = limits_ok();
         if (limited != status::ok) return limited;

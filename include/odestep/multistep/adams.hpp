@@ -194,7 +194,7 @@ private:
     // The weights and the sources are expanded at compile time at every -O, -Os included (there, as loops,
     // the arrays of weights and of pointers were built at run time), so each weight is
     // read from scaled_ and the history through K - 1 pointers chosen once per step; the loop over the
-    // components is unrolled at every -O (ODESTEP_STEP_UNROLL; rolled at -Os, with the right-hand side called
+    // components is unrolled at every -O (ODESTEP_STEP_UNROLL_ALWAYS; rolled at -Os, with the right-hand side called
     // out of line: docs/performance.md).
     template <class W>
     ODESTEP_INLINE void combine(State& out, const State& y, const State& first, const State& second) const noexcept {
@@ -206,7 +206,7 @@ private:
         const T w0 = scaled_[W::offset];
         const std::array<T, sizeof...(J)> w{scaled_[W::offset + J + 1]...};
         const std::array<const State*, sizeof...(J)> v{&source<W>(J + 1, second)...};
-        ODESTEP_STEP_UNROLL
+        ODESTEP_STEP_UNROLL_ALWAYS
         for (std::size_t n = 0; n < N; ++n) {
             T acc = w0 * first[n];
             ((acc += w[J] * (*v[J])[n]), ...);  // j = 1, 2, ... in order

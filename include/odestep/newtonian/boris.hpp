@@ -71,6 +71,19 @@ struct boris_ops {
 
 }  // namespace detail
 
+/// \brief The traits of both Boris pushers (boris, boris_relativistic): second order, one field evaluation
+/// per step, time reversible and volume preserving but not symplectic (Qin et al. 2013; Higuera & Cary 2017
+/// for the relativistic map), not self starting (v, or u, must be staggered first), on the charged particle's
+/// form of system.
+template <class State>
+struct boris_traits : stepper_traits<State, trait::order<2>, trait::rhs_evals_per_step<1>, trait::time_reversible<true>,
+                                     trait::self_starting<false>, trait::system<system_form::charged_particle>> {
+    /// The map preserves phase-space volume.
+    static constexpr bool volume_preserving = true;
+    /// The former name of rhs_evals_per_step.
+    [[deprecated("odestep: use rhs_evals_per_step")]] static constexpr std::size_t field_evals_per_step = 1;
+};
+
 /// The Boris pusher for dx/dt = v, dv/dt = (q/m) (E(t, x) + v x B(t, x)), x and v as std::array<T, 3>.
 ///
 /// **Which time v belongs to.** This is the staggered leapfrog of plasma codes: x at the step times, v half
@@ -105,30 +118,13 @@ struct boris_ops {
 /// are zeroed before the call. On `status::non_finite` (a NaN or Inf field, or a result that overflowed)
 /// x and v are left exactly as they were.
 template <class State>
-class boris : public stepper_defaults<State> {
+class boris : public boris_traits<State> {
 public:
     /// The state, std::array<T, N>.
     using state_type = State;
     /// The scalar type T.
     using value_type = value_type_t<State>;
     static_assert(detail::is_boris_state_v<State>, "odestep: the Boris pusher needs State = std::array<T, 3>");
-
-    /// The order of the global error (trait; see odestep::stepper_defaults).
-    static constexpr int order = 2;
-    /// The former name of rhs_evals_per_step.
-    [[deprecated("odestep: use rhs_evals_per_step")]] static constexpr std::size_t field_evals_per_step = 1;
-    /// The most evaluations of the right-hand side one step makes (trait; see odestep::stepper_defaults).
-    static constexpr std::size_t rhs_evals_per_step = 1;
-    /// Symplectic with a force of position alone (trait; see odestep::stepper_defaults).
-    static constexpr bool symplectic = false;  // volume preserving, not symplectic (Qin et al. 2013)
-    /// The map preserves phase-space volume.
-    static constexpr bool volume_preserving = true;
-    /// The step with -dt undoes the step with dt (trait; see odestep::stepper_defaults).
-    static constexpr bool time_reversible = true;
-    /// No step needs a state prepared by another call (trait; see odestep::stepper_defaults).
-    static constexpr bool self_starting = false;  // v must be staggered first
-    /// The form of system the stepper takes (trait; see odestep::stepper_defaults).
-    static constexpr system_form system = system_form::charged_particle;
 
     /// q/m = 1.
     constexpr boris() noexcept = default;
@@ -209,30 +205,13 @@ private:
 /// Cary 2017), time reversible, not symplectic. Known limitation of the method (ibid.): when E + v x B = 0
 /// at relativistic drift speeds it does not keep the exact E x B velocity.
 template <class State>
-class boris_relativistic : public stepper_defaults<State> {
+class boris_relativistic : public boris_traits<State> {
 public:
     /// The state, std::array<T, N>.
     using state_type = State;
     /// The scalar type T.
     using value_type = value_type_t<State>;
     static_assert(detail::is_boris_state_v<State>, "odestep: the Boris pusher needs State = std::array<T, 3>");
-
-    /// The order of the global error (trait; see odestep::stepper_defaults).
-    static constexpr int order = 2;
-    /// The former name of rhs_evals_per_step.
-    [[deprecated("odestep: use rhs_evals_per_step")]] static constexpr std::size_t field_evals_per_step = 1;
-    /// The most evaluations of the right-hand side one step makes (trait; see odestep::stepper_defaults).
-    static constexpr std::size_t rhs_evals_per_step = 1;
-    /// Symplectic with a force of position alone (trait; see odestep::stepper_defaults).
-    static constexpr bool symplectic = false;
-    /// The map preserves phase-space volume.
-    static constexpr bool volume_preserving = true;
-    /// The step with -dt undoes the step with dt (trait; see odestep::stepper_defaults).
-    static constexpr bool time_reversible = true;
-    /// No step needs a state prepared by another call (trait; see odestep::stepper_defaults).
-    static constexpr bool self_starting = false;  // u must be staggered first
-    /// The form of system the stepper takes (trait; see odestep::stepper_defaults).
-    static constexpr system_form system = system_form::charged_particle;
 
     /// q/m = 1 and c = 1.
     constexpr boris_relativistic() noexcept = default;

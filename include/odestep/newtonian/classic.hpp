@@ -18,36 +18,25 @@
 
 namespace odestep {
 
-/// The trait set of the Newtonian steppers below (stepper_defaults with system_form::newtonian). Evals is
-/// the most one step can cost (the first step of a history-keeping method, or the corrector's cap);
-/// VelocityForces, whether a(t, x, v) is accepted.
-template <class State, int Order, std::size_t Stages, std::size_t Evals, bool Symplectic, bool Reversible,
-          bool VelocityForces>
-struct newtonian_traits : stepper_defaults<State> {
-    /// The order of the global error (trait; see odestep::stepper_defaults).
-    static constexpr int order = Order;
-    /// Stages per step (trait; see odestep::stepper_defaults).
-    static constexpr std::size_t stages = Stages;
-    /// The most evaluations of the right-hand side one step makes (trait; see odestep::stepper_defaults).
-    static constexpr std::size_t rhs_evals_per_step = Evals;
+/// \brief The trait set of the Newtonian steppers below: odestep::stepper_traits with system_form::newtonian
+/// and the traits each names (odestep::trait), e.g. `newtonian_traits<State, trait::order<2>,
+/// trait::rhs_evals_per_step<2>, trait::symplectic<true>>`. rhs_evals_per_step is the most one step can cost
+/// (the first step of a history-keeping method, or the corrector's cap); velocity_forces, whether
+/// a(t, x, v) is accepted.
+template <class State, class... Named>
+struct newtonian_traits : stepper_traits<State, trait::system<system_form::newtonian>, Named...> {
     /// The former name of rhs_evals_per_step.
-    [[deprecated("odestep: use rhs_evals_per_step")]] static constexpr std::size_t accelerations_per_step = Evals;
-    /// Symplectic with a force of position alone (trait; see odestep::stepper_defaults).
-    static constexpr bool symplectic = Symplectic;
-    /// The step with -dt undoes the step with dt (trait; see odestep::stepper_defaults).
-    static constexpr bool time_reversible = Reversible;
-    /// The form of system the stepper takes (trait; see odestep::stepper_defaults).
-    static constexpr system_form system = system_form::newtonian;
-    /// Whether a(t, x, v) is accepted (trait; see odestep::stepper_defaults).
-    static constexpr bool velocity_forces = VelocityForces;
+    [[deprecated("odestep: use rhs_evals_per_step")]] static constexpr std::size_t accelerations_per_step =
+        stepper_traits<State, trait::system<system_form::newtonian>, Named...>::rhs_evals_per_step;
 };
 
 /// Euler for Newton's equations: x_{n+1} = x_n + v_n dt, v_{n+1} = v_n + a(t_n, x_n, v_n) dt.
 /// Order 1; on the oscillator its energy grows by exactly (1 + dt^2) per step.
 template <class State>
-class newtonian_euler : public newtonian_traits<State, 1, 1, 1, false, false, true> {
+class newtonian_euler : public newtonian_traits<State, trait::order<1>, trait::stages<1>, trait::rhs_evals_per_step<1>,
+                                                trait::velocity_forces<true>> {
 public:
-    using typename newtonian_traits<State, 1, 1, 1, false, false, true>::value_type;
+    using value_type = value_type_t<State>;  ///< its scalar T
 
     /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
@@ -65,9 +54,10 @@ public:
 /// The midpoint algorithm: v_{n+1} = v_n + a_n dt, x_{n+1} = x_n + (v_n + v_{n+1}) dt / 2
 /// (so x_{n+1} = x_n + v_n dt + a_n dt^2 / 2). Globally first order, like Euler, in v.
 template <class State>
-class newtonian_midpoint : public newtonian_traits<State, 1, 1, 1, false, false, true> {
+class newtonian_midpoint : public newtonian_traits<State, trait::order<1>, trait::stages<1>,
+                                                   trait::rhs_evals_per_step<1>, trait::velocity_forces<true>> {
 public:
-    using typename newtonian_traits<State, 1, 1, 1, false, false, true>::value_type;
+    using value_type = value_type_t<State>;  ///< its scalar T
 
     /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
@@ -77,7 +67,7 @@ public:
         State x1;
         State v1;
         const T half = dt / T(2);
-        ODESTEP_STEP_UNROLL
+        ODESTEP_STEP_UNROLL_ALWAYS
         for (std::size_t n = 0; n < x1.size(); ++n) {
             v1[n] = v[n] + acc[n] * dt;
             x1[n] = x[n] + (v[n] + v1[n]) * half;
@@ -95,9 +85,10 @@ public:
 /// Its error estimate is the difference to the Euler step of the same start: x: a_n dt^2 / 2,
 /// v: (a_mid - a_n) dt.
 template <class State>
-class newtonian_euler_richardson : public newtonian_traits<State, 2, 2, 2, false, false, true> {
+class newtonian_euler_richardson : public newtonian_traits<State, trait::order<2>, trait::stages<2>,
+                                                           trait::rhs_evals_per_step<2>, trait::velocity_forces<true>> {
 public:
-    using typename newtonian_traits<State, 2, 2, 2, false, false, true>::value_type;
+    using value_type = value_type_t<State>;  ///< its scalar T
     /// The order of the embedded solution (trait; see odestep::stepper_defaults).
     static constexpr int embedded_order = 1;
     /// The most evaluations of the estimating step (trait; see odestep::stepper_defaults).
@@ -133,7 +124,7 @@ private:
         State v1;
         State ex;
         State ev;
-        ODESTEP_STEP_UNROLL
+        ODESTEP_STEP_UNROLL_ALWAYS
         for (std::size_t n = 0; n < x1.size(); ++n) {
             x1[n] = x[n] + v_mid[n] * dt;
             v1[n] = v[n] + a_mid[n] * dt;
@@ -158,9 +149,10 @@ private:
 /// step costs one evaluation (two on the first step). A step that does not continue the last one (another
 /// t, dt or position object) self-starts again; after changing x or v in place, call reset().
 template <class State>
-class half_step : public newtonian_traits<State, 2, 1, 2, true, true, false> {
+class half_step : public newtonian_traits<State, trait::order<2>, trait::stages<1>, trait::rhs_evals_per_step<2>,
+                                          trait::symplectic<true>, trait::time_reversible<true>> {
 public:
-    using typename newtonian_traits<State, 2, 1, 2, true, true, false>::value_type;
+    using value_type = value_type_t<State>;  ///< its scalar T
 
     /// Forgets the history: the next step starts afresh (call it after changing x or v yourself).
     constexpr void reset() noexcept { next_.clear(); }
@@ -202,9 +194,11 @@ private:
 /// self-started with x_1 = x_0 + v_0 dt + a_0 dt^2 / 2. To give v at the new time, each step also forms
 /// x_{n+2} from a_{n+1}, which it keeps as the next step's a_n: one evaluation per step (two on the first).
 template <class State>
-class leapfrog_position_form : public newtonian_traits<State, 2, 1, 2, true, true, false> {
+class leapfrog_position_form
+    : public newtonian_traits<State, trait::order<2>, trait::stages<1>, trait::rhs_evals_per_step<2>,
+                              trait::symplectic<true>, trait::time_reversible<true>> {
 public:
-    using typename newtonian_traits<State, 2, 1, 2, true, true, false>::value_type;
+    using value_type = value_type_t<State>;  ///< its scalar T
 
     /// Forgets the history: the next step starts afresh (call it after changing x or v yourself).
     constexpr void reset() noexcept { next_.clear(); }
@@ -217,17 +211,17 @@ public:
         State x1;
         const bool continuing = next_.matches(t, dt, x);
         if (continuing) {
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = T(2) * x[n] - x_prev_[n] + a_next_[n] * dt2;
         } else {
             const State a0 = detail::acceleration(a, t, x);
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + a0[n] * (dt2 / T(2));
         }
         const State a1 = detail::acceleration(a, t + dt, x1);
         State v1;
         const T two_dt = T(2) * dt;
-        ODESTEP_STEP_UNROLL
+        ODESTEP_STEP_UNROLL_ALWAYS
         for (std::size_t n = 0; n < v1.size(); ++n) {
             const T x2 = T(2) * x1[n] - x[n] + a1[n] * dt2;  // x_{n+2}
             v1[n] = (x2 - x[n]) / two_dt;                    // v_{n+1} = (x_{n+2} - x_n) / (2 dt)
@@ -263,9 +257,10 @@ private:
 ///   changing x or v outside the stepper, the force, or dt. This step is const: one stepper serves any
 ///   number of states.
 template <class State>
-class beeman : public newtonian_traits<State, 2, 1, 2, false, false, true> {
+class beeman : public newtonian_traits<State, trait::order<2>, trait::stages<1>, trait::rhs_evals_per_step<2>,
+                                       trait::velocity_forces<true>> {
 public:
-    using typename newtonian_traits<State, 2, 1, 2, false, false, true>::value_type;
+    using value_type = value_type_t<State>;  ///< its scalar T
 
     /// What the caller-kept form keeps between steps. On status::ok, acc is a(t + dt, x) of the new x and
     /// acc_prev the acc it had on entry (or a(t, x) after a self-starting step), and started is true; on
@@ -316,19 +311,19 @@ private:
         // The choice made once per step, not in every component (at -Os the loops stay loops).
         State x1;
         if (continuing) {
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + (T(4) * a0[n] - a_prev[n]) * dt2_6;
         } else {
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < x1.size(); ++n) x1[n] = x[n] + v[n] * dt + a0[n] * (dt * dt / T(2));
         }
         const State a1 = detail::acceleration(a, t + dt, x1, v);  // a(t, x, v): the velocity at hand, v_n
         State v1;
         if (continuing) {
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < v1.size(); ++n) v1[n] = v[n] + (T(2) * a1[n] + T(5) * a0[n] - a_prev[n]) * dt_6;
         } else {
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < v1.size(); ++n) v1[n] = v[n] + (a0[n] + a1[n]) * (dt / T(2));
         }
         // a1 needs no test of its own: v1 is +-Inf or NaN when it is (0 Inf is NaN, for dt = 0 too).
@@ -349,9 +344,10 @@ private:
 /// prediction x_p = x_0 + v_0 dt + a_0 dt^2 / 2. Accepts velocity-dependent forces (v_p starts as
 /// v_n + a_n dt).
 template <class State>
-class predictor_corrector : public newtonian_traits<State, 2, 2, 1 + 16, false, false, true> {
+class predictor_corrector : public newtonian_traits<State, trait::order<2>, trait::stages<2>,
+                                                    trait::rhs_evals_per_step<1 + 16>, trait::velocity_forces<true>> {
 public:
-    using typename newtonian_traits<State, 2, 2, 1 + 16, false, false, true>::value_type;
+    using value_type = value_type_t<State>;    ///< its scalar T
     static constexpr int max_iterations = 16;  ///< the corrector's cap: rhs_evals_per_step = 1 + max_iterations
 
     /// Relative tolerance of the corrector iteration, in units of the state's magnitude.
@@ -381,7 +377,7 @@ public:
         if (continuing) {
             xp = detail::plus_scaled(x_prev_, T(2) * dt, v);  // x_p = x_{n-1} + 2 v_n dt
         } else {
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < xp.size(); ++n) xp[n] = x[n] + v[n] * dt + a0[n] * (dt * dt / T(2));
         }
         State vp = detail::plus_scaled(v, dt, a0);
@@ -392,7 +388,7 @@ public:
             State v1;
             T change = T(0);
             T size = T(0);
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < x1.size(); ++n) {
                 v1[n] = v[n] + (ap[n] + a0[n]) * half;
                 x1[n] = x[n] + (v1[n] + v[n]) * half;

@@ -244,10 +244,10 @@ private:
         // x plus it, whatever x. So a finite new x proves the new v finite, and half the test goes.
         T total = -T(0);  // x + (-0) is x, exactly: the compiler drops that first addition
         if constexpr (checks_finiteness) {
-            ODESTEP_STEP_UNROLL
+            ODESTEP_STEP_UNROLL_ALWAYS
             for (std::size_t n = 0; n < N; ++n) total += wx[n];
             if constexpr (ends_with_kick) {
-                ODESTEP_STEP_UNROLL
+                ODESTEP_STEP_UNROLL_ALWAYS
                 for (std::size_t n = 0; n < N; ++n) total += wv[n];
             }
         }
@@ -278,7 +278,7 @@ private:
             const State& px = plan::drift_before(K) ? wx : x;
             const State& pv = (!lazy_velocity || plan::kick_before(K)) ? wv : v;
             if constexpr (!plan::is_kick(K)) {
-                ODESTEP_STEP_UNROLL
+                ODESTEP_STEP_UNROLL_ALWAYS
                 for (std::size_t n = 0; n < N; ++n) wx[n] = px[n] + h * pv[n];
             } else if constexpr (fsal && Kept && K == plan::first) {
                 kick(wv, pv, *cached, h);  // a(t, x), kept from the last step's last kick
@@ -293,7 +293,7 @@ private:
 
     // to = from + h acc, component by component (from may be to).
     ODESTEP_INLINE static void kick(State& to, const State& from, const State& acc, T h) noexcept {
-        ODESTEP_STEP_UNROLL
+        ODESTEP_STEP_UNROLL_ALWAYS
         for (std::size_t n = 0; n < N; ++n) to[n] = from[n] + h * acc[n];
     }
 

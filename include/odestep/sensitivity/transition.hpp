@@ -50,11 +50,11 @@ template <class T, std::size_t R, std::size_t L, std::size_t C>
 constexpr void multiply(const sensitivity_matrix<T, R, L>& a, const sensitivity_matrix<T, L, C>& b,
                         sensitivity_matrix<T, R, C>& to) noexcept {
     for (std::size_t i = 0; i < R; ++i) {
-        ODESTEP_UNROLL
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t j = 0; j < C; ++j) to[i][j] = a[i][0] * b[0][j];
         for (std::size_t l = 1; l < L; ++l) {
             const T ail = a[i][l];
-            ODESTEP_UNROLL
+            ODESTEP_UNROLL_UNLESS_SIZE
             for (std::size_t j = 0; j < C; ++j) to[i][j] += ail * b[l][j];
         }
     }
@@ -64,7 +64,7 @@ constexpr void multiply(const sensitivity_matrix<T, R, L>& a, const sensitivity_
 template <class T, std::size_t R, std::size_t C>
 constexpr void add_scaled(sensitivity_matrix<T, R, C>& to, T c, const sensitivity_matrix<T, R, C>& m) noexcept {
     for (std::size_t i = 0; i < R; ++i) {
-        ODESTEP_UNROLL
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t j = 0; j < C; ++j) to[i][j] += c * m[i][j];
     }
 }

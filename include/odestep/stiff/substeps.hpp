@@ -9,6 +9,7 @@
 #include "../adaptive/adaptive_rk.hpp"
 #include "../adaptive/control.hpp"
 #include "../detail/ops.hpp"
+#include "../detail/preflight.hpp"
 #include "../state.hpp"
 #include "../status.hpp"
 #include "../stepper.hpp"
@@ -103,7 +104,7 @@ public:
     /// not finite), non_finite, singular_matrix, step_too_small, substep_limit (the attempt cap).
     template <class System>
     [[nodiscard]] status step(System&& f, State& y, T t, T dt) {
-        const status s = settings_status();
+        const status s = detail::preflight(*this, t, dt);
         if (s != status::ok) return s;
         return detail::cover_interval(engine_, f, y, t, dt, max_attempts_);
     }
