@@ -29,7 +29,7 @@
 #                              the stiff solvers' work-precision (issue 25): bench/stiff_work_precision.cpp (odestep's
 #                              radau5 and rodas4 free-running, and CVODE BDF and ARKODE ESDIRK where SUNDIALS is
 #                              installed) and bench/stiff_work_precision.py (SciPy Radau and BDF, where a python3
-#                              with SciPy is found) on Robertson, Van der Pol (mu = 1000) and HIRES at rtol 1e-4 ..
+#                              with SciPy is found) on Robertson, Van der Pol (mu = 1000), HIRES and POLLU at rtol 1e-4 ..
 #                              1e-10, -O2, in build/bench/swp/ (about 2 minutes); writes bench/stiff_work_precision.csv,
 #                              the section "Work-precision (stiff)" of bench/RESULTS.md, and, with gnuplot, the
 #                              diagrams build/bench/swp/swp_<problem>_{evals,time}.png; nothing else. BENCH_ROUNDS:
@@ -511,7 +511,8 @@ swp_<problem>_time.png (\`scripts/stiff_work_precision_plot.sh\`); summary: docs
   \`odestep::rosenbrock_adaptive<tables::rodas4>\` under \`integrate_adaptive\`, default settings. CVODE: BDF,
   dense matrix and solver, defaults otherwise. ARKODE: ARKStep with the implicit part only, Kennedy & Carpenter's
   ESDIRK 4(3)6L[2]SA and 5(4)8L[2]SA, dense, defaults otherwise. SciPy: \`solve_ivp(method="Radau" / "BDF", jac=J)\`.
-- error: the largest relative error over the components at t1, against the references below. f, J: every call
+- error: the largest relative error over the components at t1, against the references below (POLLU:
+  max_i |y_i - ref_i| / max(|ref_i|, 1e-10), its O1D being 4e-18). f, J: every call
   of the counting f and J (SciPy: nfev, njev); LU: factorizations, counted as SciPy counts its Radau (odestep's
   Radau: one real and one complex N x N LU per decomposition, so 2 per decomposition; Rodas4 one per attempt;
   CVODE and ARKODE: their linear-solver set-ups). The counts are deterministic and asserted equal over the

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSL-1.0
 # The stiff work-precision diagrams (bench/stiff_work_precision.cpp and .py, bench/RESULTS.md "Work-precision
-# (stiff)") from its CSV: <dir>/swp_<problem>_evals.png and swp_<problem>_time.png for robertson, vdpol and hires,
+# (stiff)") from its CSV: <dir>/swp_<problem>_evals.png and swp_<problem>_time.png for robertson, vdpol, hires, pollu,
 # each checked to be a non-empty PNG file. Failed runs (error inf) are left out of the curves.
 #   scripts/stiff_work_precision_plot.sh [CSV [PNG directory]]
 # Defaults: bench/stiff_work_precision.csv (the committed data; `scripts/bench.sh --stiff-work-precision` rewrites
@@ -24,7 +24,7 @@ trap 'rm -rf "$split"' EXIT
 # One file per problem and solver: <problem>_<solver>.csv, finite errors only.
 awk -F, -v dir="$split" '/^#/ || NF < 11 || $4 == "inf" { next } { print > (dir "/" $1 "_" $2 ".csv") }' "$csv"
 png_magic=89504e470d0a1a0a
-for problem in robertson vdpol hires; do
+for problem in robertson vdpol hires pollu; do
   rm -f "$out/swp_${problem}_evals.png" "$out/swp_${problem}_time.png"
   gnuplot -e "data='$split'; out='$out'; problem='$problem'" scripts/plots/stiff_work_precision.gp
   for png in "$out/swp_${problem}_evals.png" "$out/swp_${problem}_time.png"; do
