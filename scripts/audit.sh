@@ -242,6 +242,20 @@ stiff_unit=$out/stiff_unit.cpp
     echo "}"
   done
 } > "$stiff_unit"
+# The error-controlled stiff forms (stiff/substeps.hpp): one interval of the caller's grid per step(), on a
+# stepper object kept by the caller (it carries the engine: step size, Jacobian, factorizations), the same
+# system, Jacobian by differences. Compiled on their own, and for the M4F in float only (the issue's rows;
+# each compile takes seconds, and the audit runs in CI).
+substeps_steppers=(radau5_substeps rodas4_substeps)
+substeps_unit=$out/substeps_unit.cpp
+{
+  sed -n '1,/^};/p' "$unit"
+  for m in "${substeps_steppers[@]}"; do
+    echo "extern \"C\" __attribute__((noinline, used)) odestep::status audit_step_$m(odestep::$m<state>& s, state& y, AUDIT_T t, AUDIT_T dt) {"
+    echo "  return s.step(two_masses{}, y, t, dt);"
+    echo "}"
+  done
+} > "$substeps_unit"
 # The Newtonian steppers: one step() per splitting (symplectic.hpp, aliases of one table once) and per
 # stepper of newtonian.hpp, each on a stepper object kept by the caller between steps (the history-keeping
 # ones keep theirs there), and the caller-kept forms of the first-same-as-last splittings and of Beeman.
@@ -321,11 +335,13 @@ for core in cortex-m4f cortex-m0plus; do
   for type in float double; do
     for opt in -Os -O2; do
       tag=$core-$type$opt
-      for kind in step newton events stiff; do
+      for kind in step newton events stiff substeps; do
         case $kind in
           step) source=$unit ;; newton) source=$newton_unit ;; events) source=$event_unit ;; stiff) source=$stiff_unit ;;
+          substeps) source=$substeps_unit ;;
         esac
         rm -f "$out/$kind-$tag.o"
+        [[ $kind == substeps && $core-$type != cortex-m4f-float ]] && continue
         pool_wait
         compile_unit "$tag" "$kind" "$source" "$cpu_flags" "$opt" "$type" &
       done
@@ -342,6 +358,7 @@ for core in cortex-m4f cortex-m0plus; do
       newton_object=$out/newton-$tag.o
       events_object=$out/events-$tag.o
       stiff_object=$out/stiff-$tag.o
+      substeps_object=$out/substeps-$tag.o
       if [[ ! -f "$newton_object" ]]; then
         cat "$out/newton-$tag.log" >&2
         fail "$tag: the Newtonian step unit does not compile"
@@ -372,6 +389,18 @@ for core in cortex-m4f cortex-m0plus; do
         stiff_doubles=$(arm-none-eabi-nm -u "$stiff_object" | awk 'NF > 1 {print $NF}' | grep -E '^__aeabi_d' | tr '\n' ' ')
         [[ -z "$stiff_doubles" ]] || fail "$tag: float implicit steps call double-precision routines: $stiff_doubles"
       fi
+      if [[ $core-$type == cortex-m4f-float ]]; then
+        if [[ ! -f "$substeps_object" ]]; then
+          cat "$out/substeps-$tag.log" >&2
+          fail "$tag: the substeps unit does not compile"
+        else
+          called=$(arm-none-eabi-nm -u "$substeps_object" | awk 'NF > 1 {print $NF}' | sort -u)
+          runtime=$(grep -E "$forbidden" <<< "$called" | tr '\n' ' ')
+          [[ -z "$runtime" ]] || fail "$tag: the substep forms call the allocator or the C++ run-time: $runtime"
+          stiff_doubles=$(grep -E '^__aeabi_d' <<< "$called" | tr '\n' ' ')
+          [[ -z "$stiff_doubles" ]] || fail "$tag: float substep forms call double-precision routines: $stiff_doubles"
+        fi
+      fi
       while read -r method text stack helpers; do
         text_of[$method,$tag]=$text
         stack_of[$method,$tag]=$stack
@@ -379,7 +408,8 @@ for core in cortex-m4f cortex-m0plus; do
       done < <(measure "$object" "${object%.o}.ci"
                [[ -f "$events_object" ]] && measure "$events_object" "${events_object%.o}.ci"
                [[ -f "$newton_object" ]] && measure "$newton_object" "${newton_object%.o}.ci"
-               [[ -f "$stiff_object" ]] && measure "$stiff_object" "${stiff_object%.o}.ci")
+               [[ -f "$stiff_object" ]] && measure "$stiff_object" "${stiff_object%.o}.ci"
+               [[ -f "$substeps_object" ]] && measure "$substeps_object" "${substeps_object%.o}.ci")
     done
   done
 done
@@ -459,7 +489,10 @@ table_row() {  # table_row METHOD LABEL
   echo
   table_head
   for m in "${stiff_steppers[@]}"; do table_row "$m" "$m"; done
+  for m in "${substeps_steppers[@]}"; do table_row "$m" "$m: one grid interval, stepper kept by the caller (M4F float only)"; done
   echo
+  echo "The substep forms (stiff/substeps.hpp): the whole interval loop with its error-controlled engine; the" \
+       "engine's Jacobian and factorizations live in the stepper object (the caller's), not on the stack."
   echo "Not counted: the compiler's run-time helpers the steps call (shared by every stepper):"
   tr ' ' '\n' <<< "$helpers_seen" | awk -F: 'NF == 2 { split($2, h, ","); for (i in h) set[$1] = set[$1] " " h[i] }
     END { for (k in set) { n = split(set[k], a, " "); s = ""; delete u

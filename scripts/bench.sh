@@ -25,6 +25,15 @@
 #                              bench/work_precision.csv, docs/gallery/wp_*.png (with gnuplot) and the section
 #                              "Work-precision (adaptive)" of bench/RESULTS.md, nothing else. BENCH_ROUNDS: the
 #                              timed runs per solver and tolerance (default 21 here).
+#   scripts/bench.sh --stiff-work-precision
+#                              the stiff solvers' work-precision (issue 25): bench/stiff_work_precision.cpp (odestep's
+#                              radau5 and rodas4 free-running, and CVODE BDF and ARKODE ESDIRK where SUNDIALS is
+#                              installed) and bench/stiff_work_precision.py (SciPy Radau and BDF, where a python3
+#                              with SciPy is found) on Robertson, Van der Pol (mu = 1000), HIRES and POLLU at rtol 1e-4 ..
+#                              1e-10, -O2, in build/bench/swp/ (about 2 minutes); writes bench/stiff_work_precision.csv,
+#                              the section "Work-precision (stiff)" of bench/RESULTS.md, and, with gnuplot, the
+#                              diagrams build/bench/swp/swp_<problem>_{evals,time}.png; nothing else. BENCH_ROUNDS:
+#                              the timed runs per solver and tolerance (default 11 here; SciPy's: 3).
 #   scripts/bench.sh --c-api   the C API's RK4 step (bench/c_api_rk4.cpp, n = 4) against the C++ step with the
 #                              same C function pointer, at -O2 and -Os, with the library compiled for
 #                              ODESTEP_C_MAX_STATES 8 (the default) and 4, each with ODESTEP_C_EXACT_STATES 0
@@ -44,18 +53,20 @@ root=$PWD
 
 quick=0
 work_precision=0
+stiff_wp=0
 c_api=0
 case "${1:-}" in
   --quick) quick=1 ;;
   --c-api) c_api=1 ;;
   --work-precision) work_precision=1 ;;
+  --stiff-work-precision) stiff_wp=1 ;;
   "") ;;
   -h | --help)
     sed -n '2,/^set -uo/p' "$0" | sed '$d; s/^# \{0,1\}//'
     exit 0
     ;;
   *)
-    echo "bench: unknown argument '$1' (use --quick, --work-precision, --c-api or nothing)" >&2
+    echo "bench: unknown argument '$1' (use --quick, --work-precision, --stiff-work-precision, --c-api or nothing)" >&2
     exit 2
     ;;
 esac
@@ -110,7 +121,7 @@ fi
 # installed; the quick gate builds without them, as it always did.
 sundials_flags=(-DBENCH_NO_SUNDIALS)
 sundials_libs=()
-if ((!quick && !work_precision)) && ((have_cxx)) && header_ok arkode/arkode_arkstep.h; then
+if ((!quick && !work_precision && !stiff_wp)) && ((have_cxx)) && header_ok arkode/arkode_arkstep.h; then
   sundials_flags=()
   sundials_libs=(-lsundials_arkode -lsundials_nvecserial)
 fi
@@ -408,6 +419,130 @@ EOF
   exit 0
 fi
 
+# --- stiff work-precision mode ------------------------------------------------------------------------------
+# Its section of bench/RESULTS.md, kept as it is by the full mode and by --work-precision.
+swp_heading='## Work-precision (stiff)'
+swp_section() { awk -v h="$swp_heading" '$0 == h { p = 1; print; next } p && /^## / { p = 0 } p' "$1"; }
+if ((stiff_wp)); then
+  start=$SECONDS
+  base=${BENCH_BUILD_DIR:-$root/build/bench}
+  dir=$base/swp
+  mkdir -p "$dir"
+  dir=$(cd "$dir" && pwd)
+  swp_rounds=${BENCH_ROUNDS:-11}
+  swp_flags=()
+  swp_libs=(-lm)
+  version() { printf '#include <%s>\n%s\n' "$1" "$2" | "$CXX" -x c++ -E -P - 2> /dev/null | tail -n 1 | tr -d '"'; }
+  if header_ok arkode/arkode_arkstep.h && header_ok cvode/cvode.h; then
+    swp_libs+=(-lsundials_cvode -lsundials_arkode -lsundials_nvecserial -lsundials_sunlinsoldense -lsundials_sunmatrixdense)
+    sundials="SUNDIALS $(version sundials/sundials_config.h SUNDIALS_VERSION) CVODE and ARKODE"
+  else
+    swp_flags+=(-DBENCH_NO_SUNDIALS)
+    sundials="no CVODE or ARKODE rows (SUNDIALS not installed: bench/install-deps.sh)"
+  fi
+  echo "=== building bench/stiff_work_precision.cpp at -O2 in $dir ($sundials)"
+  if ! "$CXX" "${common_flags[@]}" -O2 "${swp_flags[@]}" -I"$root/include" "$root/bench/stiff_work_precision.cpp" \
+    -o "$dir/stiff_work_precision" "${swp_libs[@]}" > "$dir/stiff_work_precision.build.log" 2>&1; then
+    cat "$dir/stiff_work_precision.build.log" >&2
+    summary 0 1
+    exit 1
+  fi
+  echo "=== running it ($swp_rounds timed runs per solver and tolerance)"
+  if ! (cd "$dir" && ./stiff_work_precision odestep.csv "$swp_rounds") > "$dir/references.txt"; then
+    echo "bench: stiff_work_precision failed" >&2
+    summary 0 1
+    exit 1
+  fi
+  # SciPy: the first python3 that imports it (a pyenv shim's python3 may not see Debian's python3-scipy).
+  py=""
+  for p in python3 /usr/bin/python3; do
+    if command -v "$p" > /dev/null && "$p" -c 'import scipy' 2> /dev/null; then
+      py=$p
+      break
+    fi
+  done
+  csvs=("$dir/odestep.csv")
+  if [[ -n $py ]]; then
+    echo "=== SciPy's Radau and BDF ($py, 3 timed runs each)"
+    if ! "$py" bench/stiff_work_precision.py reference >> "$dir/references.txt" ||
+      ! "$py" bench/stiff_work_precision.py solve "$dir/scipy.csv" 3 >> "$dir/references.txt"; then
+      echo "bench: bench/stiff_work_precision.py failed" >&2
+      summary 0 1
+      exit 1
+    fi
+    csvs+=("$dir/scipy.csv")
+    scipy="SciPy $(sed -n 's/^SCIPY\t//p' "$dir/references.txt") (python3-scipy)"
+  else
+    scipy="no SciPy rows (no python3 with SciPy: bench/install-deps.sh installs python3-scipy)"
+  fi
+  {
+    echo "# problem,solver,rtol,error,f,jac,lu,accepted,rejected,cpu_us_min,cpu_us_median"
+    grep -hv '^#' "${csvs[@]}"
+  } > "$root/bench/stiff_work_precision.csv"
+  if ! python3 bench/stiff_work_precision.py table bench/stiff_work_precision.csv > "$dir/tables.md"; then
+    echo "bench: the stiff work-precision tables failed" >&2
+    summary 0 1
+    exit 1
+  fi
+  if command -v gnuplot > /dev/null; then
+    if ! scripts/stiff_work_precision_plot.sh bench/stiff_work_precision.csv "$dir"; then
+      summary 0 1
+      exit 1
+    fi
+  else
+    echo "bench: gnuplot is missing: no diagrams (scripts/install-deps.sh examples)" >&2
+  fi
+  compiler=$("$CXX" --version | head -n 1)
+  cpu=$(lscpu 2> /dev/null | sed -n 's/^Model name:[[:space:]]*//p' | head -n 1)
+  load=$(cut -d' ' -f1-3 /proc/loadavg 2> /dev/null || echo "?")
+  new_section=$(
+    cat << SECTION
+$swp_heading
+
+Written by \`scripts/bench.sh --stiff-work-precision\` (this section only; the full run and --work-precision keep
+it as it is). Sources: bench/stiff_work_precision.cpp, bench/stiff_work_precision.py; data:
+bench/stiff_work_precision.csv (every half decade of rtol); diagrams: build/bench/swp/swp_<problem>_evals.png and
+swp_<problem>_time.png (\`scripts/stiff_work_precision_plot.sh\`); summary: docs/stiff.md, "Work-precision".
+
+- ${compiler}, \`${common_flags[*]} -O2\`; ${sundials}; ${scipy}.
+- ${cpu:-unknown CPU}, $(nproc 2> /dev/null || echo "?") CPUs, load average ${load} at the end (shared with other jobs).
+- Every solver from the natural initial state to exactly t1 (no output in between), at rtol = 1e-4 .. 1e-10 in
+  half decades, with the system's exact Jacobian. odestep: \`odestep::radau5\` and
+  \`odestep::rosenbrock_adaptive<tables::rodas4>\` under \`integrate_adaptive\`, default settings. CVODE: BDF,
+  dense matrix and solver, defaults otherwise. ARKODE: ARKStep with the implicit part only, Kennedy & Carpenter's
+  ESDIRK 4(3)6L[2]SA and 5(4)8L[2]SA, dense, defaults otherwise. SciPy: \`solve_ivp(method="Radau" / "BDF", jac=J)\`.
+- error: the largest relative error over the components at t1, against the references below (POLLU:
+  max_i |y_i - ref_i| / max(|ref_i|, 1e-10), its O1D being 4e-18). f, J: every call
+  of the counting f and J (SciPy: nfev, njev); LU: factorizations, counted as SciPy counts its Radau (odestep's
+  Radau: one real and one complex N x N LU per decomposition, so 2 per decomposition; Rodas4 one per attempt;
+  CVODE and ARKODE: their linear-solver set-ups). The counts are deterministic and asserted equal over the
+  repeated runs, as is the final state bit for bit. us: the thread's CPU time of one whole solve, minimum over
+  ${swp_rounds} runs (the C++ solvers interleaved, the order rotated; SciPy: time.process_time, minimum of 3).
+- At a given error each solver's figures are interpolated log-log between the two tolerances around the last
+  one at which its error falls through it (as in "Work-precision (adaptive)"). "failed": the solver gave up
+  (ARKODE: error test or convergence failures at its minimum step); such runs have no time.
+
+References (t1; each checked against odestep's radau5 in long double at rtol 1e-16, a consistency check, not
+the reference; Robertson's recomputed by SciPy and compared with a second run, LSODA and Hairer & Wanner's ten
+digits):
+
+\`\`\`
+$(grep '^REFERENCE' "$dir/references.txt")
+\`\`\`
+$(cat "$dir/tables.md")
+SECTION
+  )
+  {
+    awk -v h="$swp_heading" '$0 == h { skip = 1; next } skip && /^## / { skip = 0 } !skip' "$root/bench/RESULTS.md" |
+      sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'
+    printf '\n%s\n' "$new_section"
+  } > "$dir/RESULTS.md"
+  mv "$dir/RESULTS.md" "$root/bench/RESULTS.md"
+  echo "=== wrote bench/stiff_work_precision.csv and its section of bench/RESULTS.md ($((SECONDS - start))s)"
+  summary 1 0
+  exit 0
+fi
+
 # --- full mode ----------------------------------------------------------------------------------------------
 start=$SECONDS
 base=${BENCH_BUILD_DIR:-$root/build/bench}
@@ -497,6 +632,7 @@ boost=$(printf '#include <boost/version.hpp>\nBOOST_LIB_VERSION\n' | "$CXX" -x c
 gsl=$(printf '#include <gsl/gsl_version.h>\nGSL_VERSION\n' | "$CXX" -x c++ -E -P - 2> /dev/null | tail -n 1 | tr -d '"')
 vg=$(valgrind --version)
 kept_wp=$(wp_section "$root/bench/RESULTS.md")
+kept_swp=$(swp_section "$root/bench/RESULTS.md")
 
 {
   cat << EOF
@@ -711,6 +847,7 @@ Notes:
 EOF
   # The work-precision section (scripts/bench.sh --work-precision) is not measured here: kept as it was.
   [ -z "$kept_wp" ] || printf '\n%s\n' "$kept_wp"
+  [ -z "$kept_swp" ] || printf '\n%s\n' "$kept_swp"
 } > "$root/bench/RESULTS.md"
 
 echo

@@ -4,7 +4,8 @@
 #   scripts/install-deps.sh examples   # compiler, CMake, gnuplot (the gallery's pictures)
 #   scripts/install-deps.sh test       # + clang (and its libFuzzer and sanitizer runtimes, for scripts/fuzz.sh), cppcheck, doxygen, doctest,
 #                                      #   valgrind, Boost/GSL (benchmarks), Cortex-M toolchain, QEMU
-#   scripts/install-deps.sh bench      # the benchmarks alone (bench/install-deps.sh): valgrind, Boost, GSL and
+#   scripts/install-deps.sh bench      # the benchmarks alone (bench/install-deps.sh): valgrind, Boost, GSL, SciPy (the stiff
+#                                      #   work-precision rows) and
 #                                      #   SUNDIALS, which pulls in MPI (so the test profile leaves it out)
 set -euo pipefail
 profile=${1:-test}
@@ -18,7 +19,7 @@ if [ "$profile" = test ]; then
              gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi qemu-system-arm)
 fi
 if [ "$profile" = bench ]; then
-  packages+=(valgrind libboost-dev libgsl-dev libsundials-dev)
+  packages+=(valgrind libboost-dev libgsl-dev libsundials-dev python3-scipy)
 fi
 case "$profile" in examples | test | bench) ;; *) echo "install-deps: unknown profile '$profile'" >&2; exit 2 ;; esac
 missing=()
