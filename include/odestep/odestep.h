@@ -696,16 +696,15 @@ odestep_status odestep_stiff_init_d(odestep_stiff_stepper_d* stepper, const odes
 /// with a difference Jacobian and every attempt at its cap). ODESTEP_INVALID_SETTING if an argument is null.
 odestep_status odestep_stiff_method_info_d(const odestep_stiff_method_d* method, odestep_method_info* info);
 
-/// One step: y[0 .. n-1] <- y(t + dt). A fixed-step method takes one step of dt; an error-controlled one
-/// (_substeps) covers [t, t + dt] with as many internal steps as its tolerances ask for (at most 1000
-/// attempts), the last landing exactly on t + dt, and returns ODESTEP_OK only when every internal step passed
-/// its error test. On any other status y is unchanged: ODESTEP_INVALID_SETTING (a null argument, a stepper
-/// not initialised, system->n not the n of init, a null f), ODESTEP_INVALID_TIME (t or t + dt not finite),
-/// ODESTEP_INVALID_STEP (dt 0 or not finite), ODESTEP_NON_FINITE (f, or a difference Jacobian, gave NaN or
-/// Inf, or the step overflowed), ODESTEP_SINGULAR_MATRIX (an iteration matrix is singular, or the Jacobian
-/// callback gave NaN or Inf), ODESTEP_NO_CONVERGENCE (fixed-step Newton did not converge),
-/// ODESTEP_SUBSTEP_LIMIT (the attempt cap), ODESTEP_STEP_TOO_SMALL (the internal step fell below what t
-/// resolves).
+/// One step: y[0 .. n-1] <- y(t + dt). A fixed-step method takes one step of dt; an error-controlled one (_substeps)
+/// covers [t, t + dt] with as many internal steps as its tolerances ask for (at most 1000 attempts; DP 5(4): 256), the
+/// last landing exactly on t + dt, and returns ODESTEP_OK only when every internal step passed its error test. On any
+/// other status y is unchanged: ODESTEP_INVALID_SETTING (a null argument, a stepper not initialised, system->n not the
+/// n of init, a null f), ODESTEP_INVALID_TIME (t or t + dt not finite), ODESTEP_INVALID_STEP (dt 0 or not finite),
+/// ODESTEP_NON_FINITE (f, or a difference Jacobian, gave NaN or Inf, or the step overflowed), ODESTEP_SINGULAR_MATRIX
+/// (an iteration matrix is singular, or the Jacobian callback gave NaN or Inf), ODESTEP_NO_CONVERGENCE (fixed-step
+/// Newton did not converge), ODESTEP_SUBSTEP_LIMIT (the attempt cap), ODESTEP_STEP_TOO_SMALL (the internal step fell
+/// below what t resolves).
 odestep_status odestep_stiff_step_d(odestep_stiff_stepper_d* stepper, const odestep_jac_system_d* system, double* y,
                                     double t, double dt);
 
