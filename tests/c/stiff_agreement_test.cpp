@@ -129,6 +129,8 @@ int main() {
     compare_fixed<odestep::sdirk3<state2>>(&odestep_sdirk3_d, true, "sdirk3");
     compare_fixed<odestep::radau_iia5<state2>>(&odestep_radau_iia5_d, true, "radau_iia5");
     compare_fixed<odestep::rodas3<state2>>(&odestep_rodas3_d, true, "rodas3");
+    compare_fixed<odestep::radau_iia5<state2>>(&odestep_radau_iia5_d, false, "radau_iia5 differences");
+    compare_fixed<odestep::rodas3<state2>>(&odestep_rodas3_d, false, "rodas3 differences");
     compare_controlled<odestep::dormand_prince54_substeps<state2>>(&odestep_dp54_substeps_d, "dp54_substeps");
     compare_controlled<odestep::rodas4_substeps<state2>>(&odestep_rodas4_substeps_d, "rodas4_substeps");
     compare_transition<odestep::rk4_transition<state2>>(&odestep_rk4_transition_d, "rk4_transition");
