@@ -4,6 +4,7 @@
 # (toolchains/board/, allocator wrapped away) whose main calls one part of the API, minus the same image
 # whose main calls nothing of it. Also checks that the float images hold no __aeabi_d* routine.
 # Usage: scripts/c_api_size.sh            (writes build/c_api_size/, prints a markdown table)
+#        CORES=cortex-m4f scripts/c_api_size.sh   (one core only)
 # Needs arm-none-eabi-gcc/g++ with newlib. Installs nothing.
 set -uo pipefail
 cd "$(dirname "$0")/.." || exit 2
@@ -22,13 +23,15 @@ static void f(float t, const float* y, float* dydt, void* ctx) { (void)t; (void)
 static void a(float t, const float* x, float* acc, void* ctx) { (void)t; (void)ctx; acc[0] = -x[0]; acc[1] = -x[1]; }
 static float g(float t, const float* y, void* ctx) { (void)t; (void)ctx; return y[0]; }
 static odestep_event_result bounce(float t, float* y, void* ctx) { (void)t; (void)ctx; y[1] = -0.8f * y[1]; return ODESTEP_PROCEED; }
+static void jac(float t, const float* y, float* j, void* ctx) { int i; (void)t; (void)y; (void)ctx; for (i = 0; i < 16; ++i) j[i] = 0.0f; j[1] = 1.0f; j[4] = -1.0f; j[10] = -1.0f; j[14] = 1.0f; j[15] = -1.0f; }
 volatile float sink;
 int main(void) {
     float y[4] = {1.0f, 0.0f, 1.0f, 0.0f};
     const odestep_system_f sys = {f, 0, 4};
     const odestep_newton_f nsys = {a, 0, 2};
     odestep_stepper_f s;
-    (void)sys; (void)nsys; (void)s; (void)g; (void)a; (void)f; (void)bounce;
+    const odestep_jac_system_f jsys = {f, jac, 0, 4};
+    (void)sys; (void)nsys; (void)s; (void)g; (void)a; (void)f; (void)bounce; (void)jsys; (void)jac;
 #if CASE == 1
     odestep_stepper_init_f(&s, &METHOD);
     odestep_step_f(&s, &sys, y, 0.0f, 0.01f);
@@ -52,6 +55,18 @@ int main(void) {
         odestep_event_loop_start_f(&loop, &METHOD, &e, 1, 0, &sys, y, 0.0f, 0.01f);
         odestep_event_loop_tick_f(&loop, &sys, y, 0);
     }
+#elif CASE == 6
+    {
+        odestep_stiff_stepper_f stiff;
+        odestep_stiff_init_f(&stiff, &METHOD, 4, 0.0f, 0.0f);
+        odestep_stiff_step_f(&stiff, &jsys, y, 0.0f, 0.01f);
+    }
+#elif CASE == 7
+    {
+        float phi[16];
+        odestep_step_transition_f(&METHOD, &jsys, y, phi, 0.0f, 0.01f);
+        sink = phi[5];
+    }
 #endif
     sink = y[0];
     return 0;
@@ -63,17 +78,22 @@ cases=("baseline|0|odestep_rk4_f"
        "dp54 step|1|odestep_dp54_f" "dop853 step|1|odestep_dop853_f" "abm4 step|1|odestep_abm4_f"
        "velocity_verlet step|2|odestep_velocity_verlet_f" "forest_ruth step|2|odestep_forest_ruth_f"
        "rk4 integrate|3|odestep_rk4_f" "rk4 event loop (start + tick), terminal event|4|odestep_rk4_f"
-       "rk4 event loop (start + tick), event with an action|5|odestep_rk4_f")
+       "rk4 event loop (start + tick), event with an action|5|odestep_rk4_f"
+       "backward_euler stiff step|6|odestep_backward_euler_f" "sdirk3 stiff step|6|odestep_sdirk3_f"
+       "radau_iia5 stiff step|6|odestep_radau_iia5_f" "rodas3 stiff step|6|odestep_rodas3_f"
+       "radau5_substeps stiff step|6|odestep_radau5_substeps_f" "rodas4_substeps stiff step|6|odestep_rodas4_substeps_f"
+       "dp54_substeps stiff step|6|odestep_dp54_substeps_f"
+       "rk4 step with Phi|7|odestep_rk4_transition_f" "dp54 step with Phi|7|odestep_dp54_transition_f")
 failures=0
 echo "| core | flags | use (float, n = 4, MAX_STATES ${MAX_STATES:-8}) | flash of the C API (.text + .rodata, bytes) | __aeabi_d* |"
 echo "|---|---|---|---:|---|"
-for core in cortex-m4f cortex-m0plus; do
+for core in ${CORES:-cortex-m4f cortex-m0plus}; do
   read -r -a cpu <<< "$(setting "$core" ODESTEP_TARGET_CPU_FLAGS)"
   script=$(setting "$core" ODESTEP_TARGET_LINKER_SCRIPT)
   for opt in -Os -O2; do
     lib=$out/$core$opt
     mkdir -p "$lib"
-    for src in capi capi_float capi_events_float; do
+    for src in capi capi_float capi_events_float capi_stiff_float; do
       arm-none-eabi-g++ "${cpu[@]}" $opt -std=c++17 -fno-exceptions -fno-rtti -ffp-contract=off -ffunction-sections -fdata-sections \
         -DODESTEP_C_MAX_STATES="${MAX_STATES:-8}" -I"$root/include" -c "$root/src/$src.cpp" -o "$lib/$src.o" || exit 1
     done

@@ -623,6 +623,163 @@ float odestep_newton_event_loop_time_f(const odestep_newton_event_loop_f* loop);
 /// odestep_event_loop_firings_f of a Newtonian loop.
 size_t odestep_newton_event_loop_firings_f(const odestep_newton_event_loop_f* loop, size_t i);
 
+/* ---- stiff and error-controlled steppers, and steps with their derivative (docs/c_api.md) ------------- */
+
+/// Storage of a stiff stepper, in scalars: the largest object (Radau 5(4) under error control: the
+/// Jacobian, the real and the complex iteration matrix, the tolerances and the collocation polynomial) with
+/// room to spare; besides it, 2 ODESTEP_C_MAX_STATES + 8 pointers (the pivots). The library checks at compile
+/// time that every stiff stepper fits.
+#define ODESTEP_C_STIFF_SCALARS \
+    ((4u * (size_t)ODESTEP_C_MAX_STATES * (size_t)ODESTEP_C_MAX_STATES) + (12u * (size_t)ODESTEP_C_MAX_STATES) + 32u)
+/// Pointer-sized words of a stiff stepper's storage besides ODESTEP_C_STIFF_SCALARS (see there).
+#define ODESTEP_C_STIFF_WORDS ((2u * (size_t)ODESTEP_C_MAX_STATES) + 8u)
+
+/// The Jacobian of y' = f(t, y): writes dfdy[i * n + j] = d f_i / d y_j (row-major, n x n) from y[0 .. n-1].
+typedef void (*odestep_jacobian_d)(double t, const double* y, double* dfdy, void* ctx);
+
+/// A first-order system with its Jacobian: f, the Jacobian (may be null where a method can difference f),
+/// the context handed to both, and n.
+typedef struct odestep_jac_system_d {
+    odestep_rhs_d f;              ///< the right-hand side, not null
+    odestep_jacobian_d jacobian;  ///< d f / d y; null: forward differences of f (n more evaluations of f
+                                  ///< per Jacobian), where the method offers them
+    void* ctx;                    ///< handed to f and to jacobian unchanged (may be null)
+    size_t n;                     ///< the state size, 1 to ODESTEP_C_MAX_STATES
+} odestep_jac_system_d;
+
+/// A stiff or error-controlled method, opaque: one of the constant objects below, named by its address.
+typedef struct odestep_stiff_method_d odestep_stiff_method_d;
+
+/// Backward Euler, order 1, L-stable: fixed step, simplified Newton (at most 10 iterations).
+extern const odestep_stiff_method_d odestep_backward_euler_d;
+/// Alexander's SDIRK, order 3, L-stable: fixed step, simplified Newton.
+extern const odestep_stiff_method_d odestep_sdirk3_d;
+/// Radau IIA with three stages, order 5, L-stable: fixed step, simplified Newton.
+extern const odestep_stiff_method_d odestep_radau_iia5_d;
+/// RODAS3, a Rosenbrock method of order 3, L-stable: fixed step, no iteration (constant cost per step).
+extern const odestep_stiff_method_d odestep_rodas3_d;
+/// Radau 5(4) under error control (Hairer & Wanner's RADAU5): one grid interval per step, the first choice
+/// for stiff problems.
+extern const odestep_stiff_method_d odestep_radau5_substeps_d;
+/// Rodas4 with its embedded order 3 solution under error control: one grid interval per step.
+extern const odestep_stiff_method_d odestep_rodas4_substeps_d;
+/// Dormand-Prince 5(4) under error control, explicit (the Jacobian is not used): one grid interval per step.
+extern const odestep_stiff_method_d odestep_dp54_substeps_d;
+
+/// A stiff stepper: the method, n, and the storage of its C++ object (the error-controlled ones carry their
+/// step size, Jacobian and factorizations from one call to the next). Caller-owned; set up with
+/// odestep_stiff_init_d.
+typedef struct odestep_stiff_stepper_d {
+    const odestep_stiff_method_d* method;  ///< the method; set by a successful odestep_stiff_init_d (else null)
+    size_t n;                              ///< the state size given to odestep_stiff_init_d
+    union {
+        /// the stepper object
+        unsigned char bytes[(ODESTEP_C_STIFF_SCALARS * sizeof(double)) + (ODESTEP_C_STIFF_WORDS * sizeof(void*))];
+        double align_scalar;     ///< alignment only
+        void* align_pointer;     ///< alignment only
+        uint64_t align_integer;  ///< alignment only
+    } storage;                   ///< not to be touched
+} odestep_stiff_stepper_d;
+
+/// Sets up `stepper` for `method` and state size n, with the tolerances rtol and atol (every component the
+/// same); rtol = atol = 0 selects the method's defaults. For the error-controlled methods (_substeps) they
+/// are the error tolerances (default 1e-6 both; float 1e-4), the error measured as the RMS norm over the n
+/// components; for backward Euler, SDIRK 3 and Radau IIA 5 they are Newton's stopping tolerance (relative,
+/// absolute; default eps^(3/4) both); RODAS3 does not iterate and ignores them. Everything is checked here,
+/// once: ODESTEP_INVALID_SETTING for a null argument or n of 0 or above ODESTEP_C_MAX_STATES,
+/// ODESTEP_INVALID_TOLERANCE for a negative or non-finite tolerance, or (Newton's) a zero atol with a
+/// nonzero rtol. On failure the stepper's method is null (every step refuses it).
+odestep_status odestep_stiff_init_d(odestep_stiff_stepper_d* stepper, const odestep_stiff_method_d* method, size_t n,
+                                    double rtol, double atol);
+
+/// Describes a stiff method (name, order; rhs_evals_per_step: the most evaluations of f one call can make,
+/// with a difference Jacobian and every attempt at its cap). ODESTEP_INVALID_SETTING if an argument is null.
+odestep_status odestep_stiff_method_info_d(const odestep_stiff_method_d* method, odestep_method_info* info);
+
+/// One step: y[0 .. n-1] <- y(t + dt). A fixed-step method takes one step of dt; an error-controlled one (_substeps)
+/// covers [t, t + dt] with as many internal steps as its tolerances ask for (at most 1000 attempts; DP 5(4): 256), the
+/// last landing exactly on t + dt, and returns ODESTEP_OK only when every internal step passed its error test. On any
+/// other status y is unchanged: ODESTEP_INVALID_SETTING (a null argument, a stepper not initialised, system->n not the
+/// n of init, a null f), ODESTEP_INVALID_TIME (t or t + dt not finite), ODESTEP_INVALID_STEP (dt 0 or not finite),
+/// ODESTEP_NON_FINITE (f, or a difference Jacobian, gave NaN or Inf, or the step overflowed), ODESTEP_SINGULAR_MATRIX
+/// (an iteration matrix is singular, or the Jacobian callback gave NaN or Inf), ODESTEP_NO_CONVERGENCE (fixed-step
+/// Newton did not converge), ODESTEP_SUBSTEP_LIMIT (the attempt cap), ODESTEP_STEP_TOO_SMALL (the internal step fell
+/// below what t resolves).
+odestep_status odestep_stiff_step_d(odestep_stiff_stepper_d* stepper, const odestep_jac_system_d* system, double* y,
+                                    double t, double dt);
+
+/// A step that also returns its derivative Phi = d y_{n+1} / d y_n, opaque: one of the objects below.
+typedef struct odestep_transition_method_d odestep_transition_method_d;
+/// The classic RK4 step with Phi.
+extern const odestep_transition_method_d odestep_rk4_transition_d;
+/// The Dormand-Prince 5(4) step (its 5th-order solution) with Phi.
+extern const odestep_transition_method_d odestep_dp54_transition_d;
+
+/// One step with its state-transition matrix: y[0 .. n-1] <- y_{n+1} and phi[i * n + j] = d y_{n+1,i} /
+/// d y_{n,j} (row-major, n x n), the exact derivative of the step computed (its stages differentiated with
+/// system->jacobian, called once per stage; on y' = A y, Phi is the method's stability polynomial R(dt A)).
+/// The new y is bit for bit the plain step's (odestep_step_d). ODESTEP_INVALID_SETTING for a null argument,
+/// a null f or jacobian (no difference form is offered), n out of range; ODESTEP_INVALID_TIME /
+/// ODESTEP_INVALID_STEP for t / dt; ODESTEP_NON_FINITE when the new y or Phi is not finite (NaN from the
+/// Jacobian included). On any status but ODESTEP_OK, y and phi are unchanged.
+odestep_status odestep_step_transition_d(const odestep_transition_method_d* method, const odestep_jac_system_d* system,
+                                         double* y, double* phi, double t, double dt);
+
+/// The Jacobian of y' = f(t, y) in float (see odestep_jacobian_d).
+typedef void (*odestep_jacobian_f)(float t, const float* y, float* dfdy, void* ctx);
+/// A first-order system with its Jacobian in float (see odestep_jac_system_d).
+typedef struct odestep_jac_system_f {
+    odestep_rhs_f f;              ///< the right-hand side, not null
+    odestep_jacobian_f jacobian;  ///< d f / d y, row-major; null: differences of f where the method offers them
+    void* ctx;                    ///< handed to f and to jacobian unchanged (may be null)
+    size_t n;                     ///< the state size, 1 to ODESTEP_C_MAX_STATES
+} odestep_jac_system_f;
+/// A stiff or error-controlled method in float, opaque.
+typedef struct odestep_stiff_method_f odestep_stiff_method_f;
+/// Backward Euler in float.
+extern const odestep_stiff_method_f odestep_backward_euler_f;
+/// SDIRK 3 in float.
+extern const odestep_stiff_method_f odestep_sdirk3_f;
+/// Radau IIA 5 in float.
+extern const odestep_stiff_method_f odestep_radau_iia5_f;
+/// RODAS3 in float.
+extern const odestep_stiff_method_f odestep_rodas3_f;
+/// Radau 5(4) under error control in float.
+extern const odestep_stiff_method_f odestep_radau5_substeps_f;
+/// Rodas4 under error control in float.
+extern const odestep_stiff_method_f odestep_rodas4_substeps_f;
+/// Dormand-Prince 5(4) under error control in float.
+extern const odestep_stiff_method_f odestep_dp54_substeps_f;
+/// A stiff stepper in float (see odestep_stiff_stepper_d).
+typedef struct odestep_stiff_stepper_f {
+    const odestep_stiff_method_f* method;  ///< the method; set by a successful odestep_stiff_init_f (else null)
+    size_t n;                              ///< the state size given to odestep_stiff_init_f
+    union {
+        /// the stepper object
+        unsigned char bytes[(ODESTEP_C_STIFF_SCALARS * sizeof(float)) + (ODESTEP_C_STIFF_WORDS * sizeof(void*))];
+        float align_scalar;      ///< alignment only
+        void* align_pointer;     ///< alignment only
+        uint64_t align_integer;  ///< alignment only
+    } storage;                   ///< not to be touched
+} odestep_stiff_stepper_f;
+/// odestep_stiff_init_d in float.
+odestep_status odestep_stiff_init_f(odestep_stiff_stepper_f* stepper, const odestep_stiff_method_f* method, size_t n,
+                                    float rtol, float atol);
+/// odestep_stiff_method_info_d in float.
+odestep_status odestep_stiff_method_info_f(const odestep_stiff_method_f* method, odestep_method_info* info);
+/// odestep_stiff_step_d in float.
+odestep_status odestep_stiff_step_f(odestep_stiff_stepper_f* stepper, const odestep_jac_system_f* system, float* y,
+                                    float t, float dt);
+/// A step with Phi in float, opaque.
+typedef struct odestep_transition_method_f odestep_transition_method_f;
+/// RK4 with Phi in float.
+extern const odestep_transition_method_f odestep_rk4_transition_f;
+/// Dormand-Prince 5(4) with Phi in float.
+extern const odestep_transition_method_f odestep_dp54_transition_f;
+/// odestep_step_transition_d in float.
+odestep_status odestep_step_transition_f(const odestep_transition_method_f* method, const odestep_jac_system_f* system,
+                                         float* y, float* phi, float t, float dt);
+
 #ifdef __cplusplus
 }
 #endif
