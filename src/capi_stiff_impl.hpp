@@ -222,7 +222,7 @@ constexpr transition_ops<typename S::value_type> make_transition_ops(const char*
 /// t, t + dt finite and dt finite and not zero.
 template <class T>
 status check_interval(T t, T dt) noexcept {
-    const status checked = check_step(t, dt);
+    const status checked = detail::check_step(t, dt);
     if (checked != status::ok) return checked;
     return detail::is_finite(t + dt) ? status::ok : status::invalid_time;
 }
@@ -269,7 +269,7 @@ odestep_status step_transition(const transition_ops<T>* m, const jac_system_t<T>
     if (m == nullptr || sys == nullptr || y == nullptr || phi == nullptr || sys->f == nullptr ||
         sys->jacobian == nullptr || !size_ok<T>(sys->n))
         return ODESTEP_INVALID_SETTING;
-    const status checked = check_step(t, dt);
+    const status checked = detail::check_step(t, dt);
     if (checked != status::ok) return to_c(checked);
     const std::size_t n = sys->n;
     state<T> ys = load(y, n);
