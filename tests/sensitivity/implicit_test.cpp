@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <limits>
 
+#include "sensitivity/helpers.hpp"
 #include "support/compare.hpp"
 
 namespace {
@@ -91,5 +92,194 @@ TEST_CASE(
         CHECK(same_bits(phi, phi0));
     }
 }
+
+// ---- every implicit table
+
+namespace implicit_tables {
+
+using sensitivity_test::mat;
+using sensitivity_test::max_difference;
+using sensitivity_test::max_entry;
+
+// The stability function R(z) = P(z) / Q(z) of each implicit table, from the literature (not from the
+// table): the coefficients of P and Q, lowest power first.
+//   backward Euler: the (0, 1) Pade approximant 1 / (1 - z);
+//   trapezoid and implicit midpoint: the (1, 1) Pade approximant (1 + z/2) / (1 - z/2);
+//   Gauss 4: the (2, 2) Pade approximant (1 + z/2 + z^2/12) / (1 - z/2 + z^2/12);
+//   Radau IIA 5: the (2, 3) Pade approximant (1 + 2z/5 + z^2/20) / (1 - 3z/5 + 3z^2/20 - z^3/60)
+//   (Hairer & Wanner, Solving ODE II, Sec. IV.3, (3.30), and Sec. IV.5, Theorems 5.3 and 5.5: the s-stage Gauss
+//   method has the (s, s) Pade approximant, Radau IIA the (s - 1, s));
+//   Alexander's SDIRK 3: Q(z) = (1 - gamma z)^3 and P(z) the Taylor polynomial of (1 - gamma z)^3 e^z to z^2,
+//   1 + (1 - 3 gamma) z + (1/2 - 3 gamma + 3 gamma^2) z^2; its z^3 term, 1/6 - 3 gamma/2 + 3 gamma^2 - gamma^3,
+//   vanishes by the choice of gamma (L-stability) (HW II Sec. IV.6, the stability function of an SDIRK method
+//   of order p >= s; Alexander 1977, SIAM J. Numer. Anal. 14, 1006-1021).
+struct rational {
+    std::array<long double, 4> p;
+    std::array<long double, 4> q;
+};
+constexpr long double g = 0.4358665215084589994160194511935568425293L;  // Alexander's gamma (the cubic's root)
+constexpr rational backward_euler_r{{1.0L, 0, 0, 0}, {1.0L, -1.0L, 0, 0}};
+constexpr rational trapezoid_r{{1.0L, 0.5L, 0, 0}, {1.0L, -0.5L, 0, 0}};
+constexpr rational gauss4_r{{1.0L, 0.5L, 1.0L / 12, 0}, {1.0L, -0.5L, 1.0L / 12, 0}};
+constexpr rational radau5_r{{1.0L, 2.0L / 5, 1.0L / 20, 0}, {1.0L, -3.0L / 5, 3.0L / 20, -1.0L / 60}};
+constexpr rational sdirk3_r{{1.0L, 1 - 3 * g, 0.5L - 3 * g + 3 * g* g, 0}, {1.0L, -3 * g, 3 * g* g, -g* g* g}};
+
+using mat2l = mat<long double, 2>;
+mat2l poly(const std::array<long double, 4>& c, const mat2l& z) {
+    mat2l sum{};
+    mat2l power{{{1.0L, 0.0L}, {0.0L, 1.0L}}};
+    for (long double ck : c) {
+        for (std::size_t i = 0; i < 2; ++i)
+            for (std::size_t j = 0; j < 2; ++j) sum[i][j] += ck * power[i][j];
+        power = sensitivity_test::product(power, z);
+    }
+    return sum;
+}
+// R(hA) = Q(hA)^-1 P(hA) (they commute), with the 2 x 2 inverse adj(Q) / det(Q), in long double.
+mat<double, 2> stability_matrix(const rational& r, const mat<double, 2>& a, double h) {
+    mat2l z{};
+    for (std::size_t i = 0; i < 2; ++i)
+        for (std::size_t j = 0; j < 2; ++j) z[i][j] = static_cast<long double>(h) * static_cast<long double>(a[i][j]);
+    const mat2l p = poly(r.p, z);
+    const mat2l q = poly(r.q, z);
+    const long double det = q[0][0] * q[1][1] - q[0][1] * q[1][0];
+    const mat2l qi{{{q[1][1] / det, -q[0][1] / det}, {-q[1][0] / det, q[0][0] / det}}};
+    const mat2l rl = sensitivity_test::product(qi, p);
+    mat<double, 2> out{};
+    for (std::size_t i = 0; i < 2; ++i)
+        for (std::size_t j = 0; j < 2; ++j) out[i][j] = static_cast<double>(rl[i][j]);
+    return out;
+}
+
+using state2 = std::array<double, 2>;
+const mat<double, 2> stiff_a{{{-1000.0, 3.0}, {2.0, -0.5}}};  // eigenvalues about -1000 and -0.494
+
+template <class Transition>
+mat<double, 2> phi_on_linear(double h) {
+    auto sys = odestep::with_jacobian(
+        [](double, const state2& y) {
+            return state2{stiff_a[0][0] * y[0] + stiff_a[0][1] * y[1], stiff_a[1][0] * y[0] + stiff_a[1][1] * y[1]};
+        },
+        [](double, const state2&, mat<double, 2>& J) { J = stiff_a; });
+    state2 y{1.0, -2.0};
+    mat<double, 2> phi{};
+    REQUIRE(Transition{}.step(sys, y, phi, 0.0, h) == odestep::status::ok);
+    return phi;
+}
+
+TEST_CASE("implicit transitions: on a stiff y' = A y, Phi is the published Pade or rational form R(hA)") {
+    for (double h : {0.001, 0.1}) {  // h lambda = -1 and -100 on the stiff mode
+        INFO("h = " << h);
+        const auto check = [h](const char* name, const mat<double, 2>& phi, const rational& r) {
+            INFO(name);
+            const mat<double, 2> expected = stability_matrix(r, stiff_a, h);
+            CHECK(max_difference(phi, expected) <= 64 * eps * max_entry(expected));
+        };
+        check("backward Euler", phi_on_linear<odestep::backward_euler_transition<state2>>(h), backward_euler_r);
+        check("trapezoid", phi_on_linear<odestep::trapezoid_transition<state2>>(h), trapezoid_r);
+        check("implicit midpoint", phi_on_linear<odestep::implicit_midpoint_transition<state2>>(h), trapezoid_r);
+        check("Gauss 4", phi_on_linear<odestep::gauss4_transition<state2>>(h), gauss4_r);
+        check("SDIRK 3", phi_on_linear<odestep::sdirk3_transition<state2>>(h), sdirk3_r);
+        check("Radau IIA 5", phi_on_linear<odestep::radau_iia5_transition<state2>>(h), radau5_r);
+    }
+}
+
+TEST_CASE("implicit transitions: in float, Radau IIA 5's Phi on y' = A y is R(hA) to float round-off") {
+    using statef = std::array<float, 2>;
+    auto sys = odestep::with_jacobian(
+        [](float, const statef& y) {
+            return statef{-1000.0f * y[0] + 3.0f * y[1], 2.0f * y[0] - 0.5f * y[1]};
+        },
+        [](float, const statef&, mat<float, 2>& J) {
+            J = {{{-1000.0f, 3.0f}, {2.0f, -0.5f}}};
+        });
+    statef y{1.0f, -2.0f};
+    mat<float, 2> phi{};
+    REQUIRE(odestep::radau_iia5_transition<statef>{}.step(sys, y, phi, 0.0f, 0.1f) == odestep::status::ok);
+    const mat<double, 2> expected = stability_matrix(radau5_r, stiff_a, static_cast<double>(0.1f));
+    for (std::size_t i = 0; i < 2; ++i)
+        for (std::size_t j = 0; j < 2; ++j)
+            CHECK(std::fabs(static_cast<double>(phi[i][j]) - expected[i][j]) <=
+                  64 * static_cast<double>(std::numeric_limits<float>::epsilon()) * max_entry(expected));
+}
+
+// Phi against central differences of the plain step, e^2 convergence over a sweep (sensitivity_test). A fixed
+// number of Newton iterations makes the plain step a smooth function of y_n, converged to round-off here
+// (simplified Newton contracts by about |h J| per iteration), so the differences carry no tolerance noise.
+template <template <class, class> class Plain, template <class, class> class Transition, class F, std::size_t N>
+void differences(F f, const std::array<double, N>& y, double dt, double e0) {
+    using state = std::array<double, N>;
+    using newton = odestep::fixed_newton<30>;
+    sensitivity_test::check_against_differences<Plain<state, newton>, Transition<state, newton>>(f, y, 0.0, dt, e0);
+}
+
+TEST_CASE(
+    "implicit transitions: on Lorenz and the pendulum, Phi is the limit of central differences of the plain "
+    "step, their error falling as e^2") {
+    using namespace sensitivity_test;  // NOLINT: the problems
+    auto lz = odestep::with_jacobian(lorenz{}, lorenz_jacobian{});
+    const std::array<double, 3> y0{1.0, 2.0, 20.0};
+    differences<odestep::backward_euler, odestep::backward_euler_transition>(lz, y0, 0.01, 0.4);
+    differences<odestep::trapezoid, odestep::trapezoid_transition>(lz, y0, 0.01, 0.4);
+    differences<odestep::implicit_midpoint, odestep::implicit_midpoint_transition>(lz, y0, 0.01, 0.4);
+    differences<odestep::gauss4, odestep::gauss4_transition>(lz, y0, 0.01, 0.4);
+    differences<odestep::sdirk3, odestep::sdirk3_transition>(lz, y0, 0.01, 0.4);
+    differences<odestep::radau_iia5, odestep::radau_iia5_transition>(lz, y0, 0.01, 0.4);
+    auto pd = odestep::with_jacobian(pendulum{}, pendulum_jacobian{});
+    differences<odestep::radau_iia5, odestep::radau_iia5_transition>(pd, std::array<double, 2>{2.0, 0.5}, 0.2, 0.2);
+    differences<odestep::sdirk3, odestep::sdirk3_transition>(pd, std::array<double, 2>{2.0, 0.5}, 0.2, 0.2);
+}
+
+TEST_CASE("implicit transitions: with the default Newton, Phi agrees with the fixed-iteration one to the tolerance") {
+    using namespace sensitivity_test;  // NOLINT: the problems
+    using state = std::array<double, 3>;
+    auto lz = odestep::with_jacobian(lorenz{}, lorenz_jacobian{});
+    const state y0{1.0, 2.0, 20.0};
+    state a = y0;
+    state b = y0;
+    mat<double, 3> pa{};
+    mat<double, 3> pb{};
+    REQUIRE(odestep::gauss4_transition<state>{}.step(lz, a, pa, 0.0, 0.01) == odestep::status::ok);
+    REQUIRE(odestep::gauss4_transition<state, odestep::fixed_newton<30>>{}.step(lz, b, pb, 0.0, 0.01) ==
+            odestep::status::ok);
+    CHECK(max_difference(pa, pb) <= 1e-9 * max_entry(pb));
+    // propagate with a seed s is Phi s.
+    state c = y0;
+    std::array<std::array<double, 1>, 3> s{{{1.0}, {-2.0}, {0.5}}};
+    REQUIRE(odestep::gauss4_transition<state>{}.propagate(lz, c, s, 0.0, 0.01) == odestep::status::ok);
+    CHECK(same_bits(a, c));
+    for (std::size_t i = 0; i < 3; ++i)
+        CHECK(std::fabs(s[i][0] - (pa[i][0] - 2.0 * pa[i][1] + 0.5 * pa[i][2])) <= 16 * eps * max_entry(pa));
+}
+
+TEST_CASE("implicit transitions: a singular or NaN stage matrix is singular_matrix, y and Phi untouched") {
+    const double h = 0.5;
+    auto f = [](double, const state1& y) { return state1{-y[0]}; };
+    const state1 y0{1.0};
+    const mat<double, 1> phi0{{{7.0}}};
+    SUBCASE("implicit midpoint: 1 - h/2 J = 0 at the stage") {
+        // The plain step's J at t = 0 is -1; at the stage (t = h/2), J = 4 makes 1 - (1/2)(1/2) 4 = 0 exactly.
+        auto sys = odestep::with_jacobian(
+            f, [](double t, const state1&, mat<double, 1>& J) { J = {{{t > 0.0 ? 4.0 : -1.0}}}; });
+        state1 y = y0;
+        mat<double, 1> phi = phi0;
+        CHECK(odestep::implicit_midpoint_transition<state1>{}.step(sys, y, phi, 0.0, h) ==
+              odestep::status::singular_matrix);
+        CHECK(same_bits(y, y0));
+        CHECK(same_bits(phi, phi0));
+    }
+    SUBCASE("Radau IIA 5: NaN in J at the stages") {
+        const double qnan = std::numeric_limits<double>::quiet_NaN();
+        auto sys = odestep::with_jacobian(
+            f, [qnan](double t, const state1&, mat<double, 1>& J) { J = {{{t > 0.0 ? qnan : -1.0}}}; });
+        state1 y = y0;
+        mat<double, 1> phi = phi0;
+        CHECK(odestep::radau_iia5_transition<state1>{}.step(sys, y, phi, 0.0, h) == odestep::status::singular_matrix);
+        CHECK(same_bits(y, y0));
+        CHECK(same_bits(phi, phi0));
+    }
+}
+
+}  // namespace implicit_tables
 
 }  // namespace
