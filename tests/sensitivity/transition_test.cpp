@@ -237,6 +237,51 @@ struct pendulum_dadx {
     void operator()(double, const std::array<double, 1>& x, mat<double, 1>& J) const { J = {{{-std::cos(x[0])}}}; }
 };
 
+// ---- parameters: the augmented system
+
+TEST_CASE(
+    "transition: the derivative with respect to a parameter, by the augmented system (y, k)' = (f, 0), is the "
+    "closed form of the run") {
+    // y' = -k y with the parameter k as a state component with zero derivative; s = d (y, k) / dk starts at
+    // (0, 1) and propagate carries it. The Jacobian of the augmented f, [[-k, -y], [0, 0]], holds df/dk; it
+    // comes here from dual numbers (f written once as a template). The runs' closed forms:
+    //   RK4: y_n = R(-kh)^n y_0, R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24, so dy_n/dk = -n h R^(n-1) R'(-kh) y_0;
+    //   backward Euler: y_n = y_0 / (1 + kh)^n, so dy_n/dk = -n h y_0 / (1 + kh)^(n+1).
+    using state = std::array<double, 2>;  // y, k
+    auto decay = odestep::with_dual_jacobian([](double, const auto& y) {
+        using S = std::decay_t<decltype(y[0])>;
+        return std::array<S, 2>{-y[1] * y[0], S(0.0)};
+    });
+    const double k = 0.7;
+    const double h = 0.1;
+    const double y0 = 2.0;
+    const int n = 30;
+    const double z = -k * h;
+    const double r = 1 + z + z * z / 2 + z * z * z / 6 + z * z * z * z / 24;
+    const double dr = 1 + z + z * z / 2 + z * z * z / 6;  // R'(z)
+    const double rk4_expected = -n * h * std::pow(r, n - 1) * dr * y0;
+    const double be_expected = -n * h * y0 / std::pow(1 + k * h, n + 1);
+    SUBCASE("RK4") {
+        state y{y0, k};
+        std::array<std::array<double, 1>, 2> s{{{0.0}, {1.0}}};
+        for (int i = 0; i < n; ++i)
+            REQUIRE(odestep::rk4_transition<state>{}.propagate(decay, y, s, i * h, h) == odestep::status::ok);
+        CHECK(std::fabs(y[0] - std::pow(r, n) * y0) <= 1e-14);
+        CHECK(std::fabs(s[0][0] - rk4_expected) <= 1e-13);
+        CHECK(s[1][0] == 1.0);
+    }
+    SUBCASE("backward Euler") {
+        state y{y0, k};
+        std::array<std::array<double, 1>, 2> s{{{0.0}, {1.0}}};
+        for (int i = 0; i < n; ++i)
+            REQUIRE(odestep::backward_euler_transition<state>{}.propagate(decay, y, s, i * h, h) ==
+                    odestep::status::ok);
+        CHECK(std::fabs(y[0] - y0 / std::pow(1 + k * h, n)) <= 1e-10);
+        CHECK(std::fabs(s[0][0] - be_expected) <= 1e-9);
+        CHECK(std::fabs(s[1][0] - 1.0) <= 1e-15);
+    }
+}
+
 TEST_CASE("splitting transition: velocity Verlet's Phi on x'' = -w^2 x is its published transfer matrix") {
     // Velocity Verlet on the oscillator: x1 = (1 - h^2 w^2/2) x0 + h v0, v1 = -h w^2 (1 - h^2 w^2/4) x0 +
     // (1 - h^2 w^2/2) v0 (Hairer, Lubich & Wanner, Geometric Numerical Integration, Sec. I.5; written out
