@@ -130,30 +130,38 @@ constexpr rational sdirk3_r{{1.0L, 1 - 3 * g, 0.5L - 3 * g + 3 * g* g, 0}, {1.0L
 // Gamma))^-1 1 from the published table.
 constexpr rational rodas3_r{{1.0L, -1.0L, 0, 1.0L / 6, 0}, {1.0L, -2.0L, 1.5L, -0.5L, 1.0L / 16}};
 
-using mat2l = mat<long double, 2>;
-mat2l poly(const std::array<long double, 5>& c, const mat2l& z) {
-    mat2l sum{};
-    mat2l power{{{1.0L, 0.0L}, {0.0L, 1.0L}}};
-    for (long double ck : c) {
-        for (std::size_t i = 0; i < 2; ++i)
-            for (std::size_t j = 0; j < 2; ++j) sum[i][j] += ck * power[i][j];
-        power = sensitivity_test::product(power, z);
+// R(z) = P(z) / Q(z) at a scalar z.
+long double evaluate(const rational& r, long double z) {
+    long double p = 0.0L;
+    long double q = 0.0L;
+    for (std::size_t k = 5; k-- > 0;) {
+        p = p * z + r.p[k];
+        q = q * z + r.q[k];
     }
-    return sum;
+    return p / q;
 }
-// R(hA) = Q(hA)^-1 P(hA) (they commute), with the 2 x 2 inverse adj(Q) / det(Q), in long double.
+// R(hA) of a 2 x 2 A with distinct real eigenvalues l1, l2, by Sylvester's formula
+// R(hA) = R(h l1) (A - l2 I) / (l1 - l2) + R(h l2) (A - l1 I) / (l2 - l1), in long double: scalar R only, no
+// matrix powers (whose entries, 1e8 for (hA)^4 at h lambda = -100, would leave little accuracy where long
+// double is double, as on the Cortex-M targets).
 mat<double, 2> stability_matrix(const rational& r, const mat<double, 2>& a, double h) {
-    mat2l z{};
-    for (std::size_t i = 0; i < 2; ++i)
-        for (std::size_t j = 0; j < 2; ++j) z[i][j] = static_cast<long double>(h) * static_cast<long double>(a[i][j]);
-    const mat2l p = poly(r.p, z);
-    const mat2l q = poly(r.q, z);
-    const long double det = q[0][0] * q[1][1] - q[0][1] * q[1][0];
-    const mat2l qi{{{q[1][1] / det, -q[0][1] / det}, {-q[1][0] / det, q[0][0] / det}}};
-    const mat2l rl = sensitivity_test::product(qi, p);
+    const auto wide = [](double x) { return static_cast<long double>(x); };
+    const long double a00 = wide(a[0][0]), a01 = wide(a[0][1]), a10 = wide(a[1][0]), a11 = wide(a[1][1]);
+    const long double half_trace = (a00 + a11) / 2;
+    const long double det = a00 * a11 - a01 * a10;
+    const long double root = std::sqrt(half_trace * half_trace - det);
+    const long double l1 = half_trace < 0 ? half_trace - root : half_trace + root;  // the larger in magnitude
+    const long double l2 = det / l1;                                                // without cancellation
+    const long double hl = static_cast<long double>(h);
+    const long double r1 = evaluate(r, hl * l1) / (l1 - l2);
+    const long double r2 = evaluate(r, hl * l2) / (l2 - l1);
+    const long double m[2][2] = {{a00, a01}, {a10, a11}};
     mat<double, 2> out{};
     for (std::size_t i = 0; i < 2; ++i)
-        for (std::size_t j = 0; j < 2; ++j) out[i][j] = static_cast<double>(rl[i][j]);
+        for (std::size_t j = 0; j < 2; ++j) {
+            const long double id = i == j ? 1.0L : 0.0L;
+            out[i][j] = static_cast<double>(r1 * (m[i][j] - l2 * id) + r2 * (m[i][j] - l1 * id));
+        }
     return out;
 }
 
@@ -382,7 +390,7 @@ TEST_CASE(
         mat<double, 2> richardson{};
         for (std::size_t i = 0; i < 2; ++i)
             for (std::size_t j = 0; j < 2; ++j) richardson[i][j] = (4 * d2[i][j] - d1[i][j]) / 3;
-        MESSAGE("|Phi - Richardson| = " << max_difference(phi, richardson));
+        INFO("|Phi - Richardson| = " << max_difference(phi, richardson));
         CHECK(max_difference(phi, richardson) <= tolerance);
     };
     check(odestep::with_jacobian(pendulum{}, pendulum_jacobian{}), s2{2.0, 0.5}, 0.0, 0.2, 1e-10);
