@@ -16,7 +16,6 @@
 
 namespace ekf_pendulum {
 
-
 using state = std::array<double, 2>;  // theta (rad), omega (rad/s)
 using matrix = odestep::jacobian_t<state>;
 
