@@ -17,7 +17,8 @@
 #     same springs, undamped, as a force of position alone) and the Boris pusher (x and v of 3), their step()
 #     under the checks of 2 and 3 as well; no step unit calls the allocator or the C++ run-time.
 # 3c. The same for the implicit steppers (backward Euler, trapezoid, SDIRK 3, Radau IIA 5) and RODAS3 on the
-#     4-state system of 3, with their float steps checked for __aeabi_d* as in 2.
+#     4-state system of 3, with their float steps checked for __aeabi_d* as in 2; and RK4 with its
+#     state-transition matrix (rk4_transition, the Jacobian by hand).
 #  4. Instructions per step of every stepper on the emulated Cortex-M4F, float, -O2 and -Os, against the scalar
 #     hand loops (scripts/bench-m4f.sh, QEMU -icount): the table goes into the report and into build/audit/cortex-m.md
 #     (between its bench-m4f markers). Fails only if the image does not build or run or a row fails its check.
@@ -241,6 +242,18 @@ stiff_unit=$out/stiff_unit.cpp
     echo "  return odestep::$m<state>{}.step(two_masses{}, y, t, dt);"
     echo "}"
   done
+  cat <<'TRANSITION'
+// RK4 with its state-transition matrix Phi (sensitivity/transition.hpp), the springs' Jacobian by hand.
+struct two_masses_jacobian {
+  void operator()(AUDIT_T, const state&, odestep::jacobian_t<state>& J) const noexcept {
+    J = {{{AUDIT_T(0), AUDIT_T(1), AUDIT_T(0), AUDIT_T(0)}, {AUDIT_T(-2), AUDIT_T(-0.1), AUDIT_T(1), AUDIT_T(0)},
+          {AUDIT_T(0), AUDIT_T(0), AUDIT_T(0), AUDIT_T(1)}, {AUDIT_T(1), AUDIT_T(0), AUDIT_T(-2), AUDIT_T(-0.1)}}};
+  }
+};
+extern "C" __attribute__((noinline, used)) odestep::status audit_step_rk4_transition(state& y, odestep::jacobian_t<state>& phi, AUDIT_T t, AUDIT_T dt) {
+  return odestep::rk4_transition<state>{}.step(odestep::with_jacobian(two_masses{}, two_masses_jacobian{}), y, phi, t, dt);
+}
+TRANSITION
 } > "$stiff_unit"
 # The error-controlled stiff forms (stiff/substeps.hpp): one interval of the caller's grid per step(), on a
 # stepper object kept by the caller (it carries the engine: step size, Jacobian, factorizations), the same
@@ -482,14 +495,16 @@ table_row() {  # table_row METHOD LABEL
     table_row "$m" "$label"
   done
   echo
-  echo "## 3c. Flash and stack of one step() of the implicit and Rosenbrock steppers (4 states), bytes"
+  echo "## 3c. Flash and stack of one step() of the implicit and Rosenbrock steppers, and of RK4 with Phi (4 states), bytes"
   echo
   echo "Measured as in 3, on the same two masses and three springs; Jacobian by forward differences, the default Newton" \
-       "policy (newton<10>). The LU factorization and solve and the difference Jacobian are included."
+       "policy (newton<10>). The LU factorization and solve and the difference Jacobian are included. rk4_transition:" \
+       "the RK4 step and its 4 x 4 state-transition matrix (sensitivity/transition.hpp), the Jacobian by hand."
   echo
   table_head
   for m in "${stiff_steppers[@]}"; do table_row "$m" "$m"; done
   for m in "${substeps_steppers[@]}"; do table_row "$m" "$m: one grid interval, stepper kept by the caller (M4F float only)"; done
+  table_row rk4_transition "rk4_transition: step and Phi (4 x 4), Jacobian by hand"
   echo
   echo "The substep forms (stiff/substeps.hpp): the whole interval loop with its error-controlled engine; the" \
        "engine's Jacobian and factorizations live in the stepper object (the caller's), not on the stack."

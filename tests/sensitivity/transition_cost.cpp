@@ -7,6 +7,7 @@
 // Each measured form is one noinline function: the plain step; the step with Phi (rk4_transition) with the
 // hand-written Jacobian and with the Jacobian by dual numbers; and Phi by forward differences, N + 1 plain
 // steps, (step(y + h e_j) - step(y)) / h. The same four for backward Euler (hand and dual J) on both systems,
+// and for Radau IIA 5 and RODAS3 (N = 2, 4, 8),
 // and for velocity Verlet (a fresh stepper per step, as the transition takes it) on a chain of n = N/2 unit
 // masses joined by springs with a quartic term, a_i = F(x_{i+1} - x_i) - F(x_i - x_{i-1}), F(d) = d + d^3,
 // fixed ends (a Fermi-Pasta-Ulam chain).
@@ -140,53 +141,72 @@ double run_dense() {
     return sum;
 }
 
-// ---- backward Euler
+// ---- the implicit steppers and RODAS3: backward Euler, Radau IIA 5, RODAS3 (a kind names the plain stepper and
+// its transition)
 
-template <class F, std::size_t N>
-[[gnu::noinline]] void be_plain(F& sys, std::array<double, N>& y) {
-    if (odestep::backward_euler<std::array<double, N>>{}.step(sys, y, 0.0, dt) != odestep::status::ok) y[0] = 0.0;
+struct be_kind {
+    template <std::size_t N>
+    using plain = odestep::backward_euler<std::array<double, N>>;
+    template <std::size_t N>
+    using transition = odestep::backward_euler_transition<std::array<double, N>>;
+};
+struct radau_kind {
+    template <std::size_t N>
+    using plain = odestep::radau_iia5<std::array<double, N>>;
+    template <std::size_t N>
+    using transition = odestep::radau_iia5_transition<std::array<double, N>>;
+};
+struct rodas3_kind {
+    template <std::size_t N>
+    using plain = odestep::rodas3<std::array<double, N>>;
+    template <std::size_t N>
+    using transition = odestep::rodas3_transition<std::array<double, N>>;
+};
+
+template <class Kind, class F, std::size_t N>
+[[gnu::noinline]] void stiff_plain(F& sys, std::array<double, N>& y) {
+    if (typename Kind::template plain<N>{}.step(sys, y, 0.0, dt) != odestep::status::ok) y[0] = 0.0;
 }
-template <class F, std::size_t N>
-[[gnu::noinline]] void be_phi_hand(F& sys, std::array<double, N>& y, odestep::jacobian_t<std::array<double, N>>& phi) {
-    if (odestep::backward_euler_transition<std::array<double, N>>{}.step(sys, y, phi, 0.0, dt) != odestep::status::ok)
-        y[0] = 0.0;
+template <class Kind, class F, std::size_t N>
+[[gnu::noinline]] void stiff_phi_hand(F& sys, std::array<double, N>& y,
+                                      odestep::jacobian_t<std::array<double, N>>& phi) {
+    if (typename Kind::template transition<N>{}.step(sys, y, phi, 0.0, dt) != odestep::status::ok) y[0] = 0.0;
 }
-template <class F, std::size_t N>
-[[gnu::noinline]] void be_phi_dual(F& sys, std::array<double, N>& y, odestep::jacobian_t<std::array<double, N>>& phi) {
-    if (odestep::backward_euler_transition<std::array<double, N>>{}.step(sys, y, phi, 0.0, dt) != odestep::status::ok)
-        y[0] = 0.0;
+template <class Kind, class F, std::size_t N>
+[[gnu::noinline]] void stiff_phi_dual(F& sys, std::array<double, N>& y,
+                                      odestep::jacobian_t<std::array<double, N>>& phi) {
+    if (typename Kind::template transition<N>{}.step(sys, y, phi, 0.0, dt) != odestep::status::ok) y[0] = 0.0;
 }
-template <class F, std::size_t N>
-[[gnu::noinline]] void be_phi_differences(F& sys, std::array<double, N>& y,
-                                          odestep::jacobian_t<std::array<double, N>>& phi) {
-    const odestep::backward_euler<std::array<double, N>> be;
+template <class Kind, class F, std::size_t N>
+[[gnu::noinline]] void stiff_phi_differences(F& sys, std::array<double, N>& y,
+                                             odestep::jacobian_t<std::array<double, N>>& phi) {
+    const typename Kind::template plain<N> stepper;
     std::array<double, N> base = y;
-    if (be.step(sys, base, 0.0, dt) != odestep::status::ok) return;
+    if (stepper.step(sys, base, 0.0, dt) != odestep::status::ok) return;
     for (std::size_t j = 0; j < N; ++j) {
         std::array<double, N> moved = y;
         const double h = std::sqrt(2.2e-16) * (std::fabs(y[j]) + 1.0);
         moved[j] += h;
-        if (be.step(sys, moved, 0.0, dt) != odestep::status::ok) return;
+        if (stepper.step(sys, moved, 0.0, dt) != odestep::status::ok) return;
         for (std::size_t i = 0; i < N; ++i) phi[i][j] = (moved[i] - base[i]) / h;
     }
     y = base;
 }
 
-template <class F, class H, class D, std::size_t N>
-double run_backward_euler(const F& f, H& hand, D& dual, const std::array<double, N>& y) {
+template <class Kind, class H, class D, std::size_t N>
+double run_stiff(H& hand, D& dual, const std::array<double, N>& y) {
     odestep::jacobian_t<std::array<double, N>> phi{};
     double sum = 0.0;
     for (int r = 0; r < reps; ++r) {
         std::array<double, N> a = y, b = y, c = y, d = y;
-        be_plain(hand, a);  // the plain step with the hand Jacobian (as an implicit stepper is used)
-        be_phi_hand(hand, b, phi);
+        stiff_plain<Kind>(hand, a);  // the plain step with the hand Jacobian (as an implicit stepper is used)
+        stiff_phi_hand<Kind>(hand, b, phi);
         sum += phi[0][0];
-        be_phi_dual(dual, c, phi);
+        stiff_phi_dual<Kind>(dual, c, phi);
         sum += phi[0][0];
-        be_phi_differences(hand, d, phi);
+        stiff_phi_differences<Kind>(hand, d, phi);
         sum += phi[0][0] + a[0] + b[0] + c[0] + d[0];
     }
-    (void)f;
     return sum;
 }
 
@@ -284,34 +304,41 @@ double run_chain() {
     return sum;
 }
 
-template <std::size_t N>
-double run_be_lorenz96() {
+template <class Kind, std::size_t N>
+double run_stiff_lorenz96() {
     lorenz96<N> f;
     auto hand = odestep::with_jacobian(f, lorenz96_jacobian<N>{});
     auto dual = odestep::with_dual_jacobian(f);
     std::array<double, N> y{};
     for (std::size_t i = 0; i < N; ++i) y[i] = 8.0 + 0.01 * double(i);
-    return run_backward_euler(f, hand, dual, y);
+    return run_stiff<Kind>(hand, dual, y);
 }
-template <std::size_t N>
-double run_be_dense() {
+template <class Kind, std::size_t N>
+double run_stiff_dense() {
     const dense<N> f = make_dense<N>();
     auto hand = odestep::with_jacobian(
         f, [&f](double, const std::array<double, N>&, odestep::jacobian_t<std::array<double, N>>& j) { j = f.a; });
     auto dual = odestep::with_dual_jacobian(f);
     std::array<double, N> y{};
     for (std::size_t i = 0; i < N; ++i) y[i] = 1.0 + 0.01 * double(i);
-    return run_backward_euler(f, hand, dual, y);
+    return run_stiff<Kind>(hand, dual, y);
 }
 
 }  // namespace
 
 int main() {
-    const double s = run_lorenz96<2>() + run_lorenz96<4>() + run_lorenz96<8>() + run_lorenz96<16>() + run_dense<2>() +
-                     run_dense<4>() + run_dense<8>() + run_dense<16>() + run_be_lorenz96<2>() + run_be_lorenz96<4>() +
-                     run_be_lorenz96<8>() + run_be_lorenz96<16>() + run_be_dense<2>() + run_be_dense<4>() +
-                     run_be_dense<8>() + run_be_dense<16>() + run_chain<1>() + run_chain<2>() + run_chain<4>() +
-                     run_chain<8>();
+    double s = run_lorenz96<2>() + run_lorenz96<4>() + run_lorenz96<8>() + run_lorenz96<16>() + run_dense<2>() +
+               run_dense<4>() + run_dense<8>() + run_dense<16>() + run_chain<1>() + run_chain<2>() + run_chain<4>() +
+               run_chain<8>();
+    s += run_stiff_lorenz96<be_kind, 2>() + run_stiff_lorenz96<be_kind, 4>() + run_stiff_lorenz96<be_kind, 8>() +
+         run_stiff_lorenz96<be_kind, 16>() + run_stiff_dense<be_kind, 2>() + run_stiff_dense<be_kind, 4>() +
+         run_stiff_dense<be_kind, 8>() + run_stiff_dense<be_kind, 16>();
+    s += run_stiff_lorenz96<radau_kind, 2>() + run_stiff_lorenz96<radau_kind, 4>() +
+         run_stiff_lorenz96<radau_kind, 8>() + run_stiff_dense<radau_kind, 2>() + run_stiff_dense<radau_kind, 4>() +
+         run_stiff_dense<radau_kind, 8>();
+    s += run_stiff_lorenz96<rodas3_kind, 2>() + run_stiff_lorenz96<rodas3_kind, 4>() +
+         run_stiff_lorenz96<rodas3_kind, 8>() + run_stiff_dense<rodas3_kind, 2>() + run_stiff_dense<rodas3_kind, 4>() +
+         run_stiff_dense<rodas3_kind, 8>();
     std::printf("%g\n", s);
     return 0;
 }

@@ -6,6 +6,7 @@
 
 #include "dual.hpp"
 #include "implicit.hpp"
+#include "rosenbrock.hpp"
 #include "transition.hpp"
 
 #endif
