@@ -417,13 +417,14 @@ TEST_CASE("free-running events: a terminal event on the first step stops there; 
 }
 
 TEST_CASE("free-running events: an action that changes only a parameter restarts the step sequence (FSAL honest)") {
-    // y' = k, k = 1 until y = 1, then k = -1: y = t on [0, 1], y = 2 - t after; at t = 3, y = -1 exactly.
-    // Without the restart, DP 5(4)'s kept first stage (f at the event, k = 1) would start the next step.
-    for (const double step : {10.0, 0.0}) {
+    // y' = k, k = 1 until t = 1, then k = -1: y = t on [0, 1], y = 2 - t after; at t = 3, y = -1 exactly.
+    // With a first step of 1 the event is at that step's end (g = t - 1 is zero there): without the restart,
+    // DP 5(4)'s kept first stage (f at that point, with k = 1) would start the next step.
+    for (const double step : {1.0, 10.0, 0.0}) {
         CAPTURE(step);
         double k = 1.0;
         auto f = [&k](double, const state1&) { return state1{k}; };
-        auto turn = odestep::make_event<state1>([](double, const state1& y) { return y[0] - 1.0; },
+        auto turn = odestep::make_event<state1>([](double t, const state1&) { return t - 1.0; },
                                                 odestep::direction::rising, [&k](double, state1&) { k = -1.0; });
         clock_dp5 engine;
         engine.set_step_size(step);
