@@ -572,3 +572,65 @@ TEST_CASE("free-running events: bad input is refused before anything is observed
     static_assert(odestep::max_rhs_evals_free_running<dp5<double>>(2, {}, 1) == 3 + 1 * (6 + 3 + 0 + 8),
                   "DP 5(4): start 3, per attempt 6 stages, a restart's 3, no completion, 8 actions' headings");
 }
+
+TEST_CASE("free-running events: integrate_times across an action follows the trajectory the action left") {
+    // y' = k, k = 1 until t = 1, then k = -1 (a parameter-only action): y = t, then 2 - t. The times before the
+    // event come from the first step's extension, those after from the restarted steps.
+    for (const double step : {10.0, 0.0}) {
+        CAPTURE(step);
+        double k = 1.0;
+        auto f = [&k](double, const state1&) { return state1{k}; };
+        auto turn = odestep::make_event<state1>([](double t, const state1&) { return t - 1.0; },
+                                                odestep::direction::rising, [&k](double, state1&) { k = -1.0; });
+        clock_dp5 engine;
+        engine.set_step_size(step);
+        const std::array<double, 4> times{0.5, 1.5, 2.5, 4.0};
+        std::vector<sample> seen;
+        state1 y{0.0};
+        const auto r =
+            odestep::integrate_times(engine, f, y, 0.0, times, odestep::watch(turn), [&](double t, const state1& s) {
+                seen.push_back({t, s[0]});
+            });
+        CHECK(r.status == odestep::status::ok);
+        CHECK(r.t == 4.0);
+        CHECK(r.fired == 1);
+        REQUIRE(seen.size() == 4);
+        const std::array<double, 4> expected{0.5, 0.5, -0.5, -2.0};
+        for (std::size_t i = 0; i < 4; ++i) {
+            CAPTURE(i);
+            CHECK(seen[i].t == times[i]);
+            CHECK(std::abs(seen[i].y - expected[i]) <= 64.0 * std::numeric_limits<double>::epsilon());
+        }
+        CHECK(y[0] == seen[3].y);
+    }
+}
+
+TEST_CASE("free-running events: on_interpolant locates on the Hermite cubic of the free-running step") {
+    // Free fall from 10 m: the Hermite cubic is exact for the quadratic, so the impact is the closed form's
+    // sqrt(2 h / g) to rounding, as with the step's own extension.
+    using T = double;
+    using state = std::array<T, 2>;
+    auto f = [](T, const state& s) { return state{s[1], -9.81}; };
+    auto ground = odestep::make_event<state>([](T, const state& s) { return s[0]; }, odestep::direction::falling);
+    dp5<double> engine;
+    state y{10.0, 0.0};
+    const auto r =
+        odestep::integrate_adaptive(engine, f, y, 0.0, 100.0, odestep::watch<odestep::on_interpolant<>>(ground));
+    const double t_hit = std::sqrt(2.0 * 10.0 / 9.81);
+    CHECK(r.status == odestep::status::stopped_by_event);
+    CHECK(std::abs(r.t - t_hit) <= 1e-14);
+    CHECK(y[0] >= 0.0);
+    CHECK(y[0] <= 1e-13);
+    // and the ball bounces on it until event_limit, never below the floor
+    auto bounce = odestep::make_event<state>([](T, const state& s) { return s[0]; }, odestep::direction::falling,
+                                             [](T, state& s) { s[1] = -0.7 * s[1]; });
+    dp5<double> again;
+    state z{1.0, 0.0};
+    double lowest = 1.0;
+    const auto b =
+        odestep::integrate_adaptive(again, f, z, 0.0, 10.0, odestep::watch<odestep::on_interpolant<>>(bounce),
+                                    [&](T, const state& s) { lowest = std::fmin(lowest, s[0]); });
+    CHECK(b.status == odestep::status::event_limit);
+    CHECK(b.t < zeno_time(1.0, 9.81, 0.7));
+    CHECK(lowest >= -floor_tolerance<double>());
+}
