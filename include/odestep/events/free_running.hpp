@@ -14,7 +14,6 @@
 #include "../adaptive/adaptive_rk.hpp"
 #include "../adaptive/dense.hpp"
 #include "../adaptive/integrate_adaptive.hpp"
-#include "../detail/hermite.hpp"
 #include "../detail/ops.hpp"
 #include "../integrate.hpp"
 #include "../state.hpp"
@@ -36,20 +35,67 @@ namespace detail {
 template <class Engine>
 struct free_extension;
 
-// The explicit pairs: odestep::dense_step (DP 5(4)'s and DOP853's own extensions, cubic Hermite otherwise).
+// The cubic Hermite interpolant (hermite_cubic's polynomial, HNW I (6.7)) in powers of theta about the start:
+//     u = y0 + theta (h f0 + theta ((3 d - 2 h f0 - h f1) + theta (h f0 + h f1 - 2 d))),  d = y1 - y0,
+// so that just after the start it is y0 plus a term of the size of the motion there (theta h f0), not of the
+// whole step's rounding (eps |d|): a ball bounced slowly on the floor in a long step stays above it.
+template <class State>
+void hermite_from_start(const State& y0, const State& f0, const State& y1, const State& f1, value_type_t<State> h,
+                        value_type_t<State> theta, State& out) noexcept {
+    using T = value_type_t<State>;
+    for (std::size_t i = 0; i < state_traits<State>::size; ++i) {
+        const T d = y1[i] - y0[i];
+        const T a = h * f0[i];
+        const T b = h * f1[i];
+        out[i] = y0[i] + theta * (a + theta * ((T(3) * d - T(2) * a - b) + theta * (a + b - T(2) * d)));
+    }
+}
+
+// The explicit pairs: odestep::dense_step (DP 5(4)'s and DOP853's own extensions, cubic Hermite otherwise),
+// read about the start. DOPRI5's and DOP853's form u = r1 + theta (r2 + (1 - theta)(r3 + theta R)),
+// R = r4 + (1 - theta) p (p = r5, or DOP853's r5 + theta (r6 + (1 - theta)(r7 + theta r8))), with
+// r2 + r3 = h k1, is the same polynomial as
+//     u = r1 + theta (h k1 + theta ((1 - theta) R - r3)),
+// whose first term is the step's own h k1 (kept here from the stages), not r2 + r3 rounded to eps |r2|.
 template <class Method, class State>
 struct free_extension<adaptive_rk<Method, State>> {
     using T = value_type_t<State>;
     using dense_type = dense_step<Method, State>;
     static constexpr std::size_t rhs_evals_to_complete = dense_type::rhs_evals_to_complete;
+    static constexpr bool dopri5 = std::is_same_v<Method, tables::dormand_prince54>;
+    static constexpr bool dop853 = std::is_same_v<Method, tables::dop853>;
+    struct sink_type {
+        free_extension* self;
+        template <class Stages>
+        void operator()(T t, const State& y, T h, const Stages& k, const State& y_new) const noexcept {
+            self->dense(t, y, h, k, y_new);
+            for (std::size_t i = 0; i < state_traits<State>::size; ++i) self->hk1[i] = h * k[0][i];
+        }
+    };
     dense_type dense;
-    dense_type& sink() noexcept { return dense; }
+    State hk1{};
+    sink_type sink() noexcept { return sink_type{this}; }
     void begin(T, const State&, T, const State&) noexcept {}
     template <class System>
     status complete(System& f, adaptive_rk<Method, State>& engine) {
         return dense.complete(f, engine);
     }
-    void at_offset(T s, State& out) const noexcept { dense.at_theta(s / dense.step(), out); }
+    void at_offset(T s, State& out) const noexcept {
+        const auto& piece = dense.piece();
+        const T theta = s / piece.h;
+        const T theta1 = T(1) - theta;
+        const auto& r = piece.r;
+        if constexpr (dopri5 || dop853) {
+            for (std::size_t i = 0; i < state_traits<State>::size; ++i) {
+                T p = r[4][i];
+                if constexpr (dop853) p = r[4][i] + theta * (r[5][i] + theta1 * (r[6][i] + theta * r[7][i]));
+                const T big_r = r[3][i] + theta1 * p;
+                out[i] = r[0][i] + theta * (hk1[i] + theta * (theta1 * big_r - r[2][i]));
+            }
+        } else {
+            hermite_from_start(r[0], r[1], r[2], r[3], piece.h, theta, out);
+        }
+    }
 };
 
 // Radau IIA 5: the step's collocation polynomial, no evaluation. radau5_dense reads it about the step's end,
@@ -92,7 +138,8 @@ struct free_extension<radau5<State>> {
     }
 };
 
-// The Rosenbrock pairs publish no extension: cubic Hermite through the step's ends, f at both (two evaluations).
+// The Rosenbrock pairs publish no extension: cubic Hermite through the step's ends, f at both (two evaluations),
+// read about the start (hermite_from_start).
 template <class Method, class State>
 struct free_extension<rosenbrock_adaptive<Method, State>> {
     using T = value_type_t<State>;
@@ -116,7 +163,7 @@ struct free_extension<rosenbrock_adaptive<Method, State>> {
         evaluate(f, t1, static_cast<const State&>(y1), f1);
         return all_finite(f0) && all_finite(f1) ? status::ok : status::non_finite;
     }
-    void at_offset(T s, State& out) const noexcept { hermite_cubic(y0, f0, y1, f1, t1 - t0, s / (t1 - t0), out); }
+    void at_offset(T s, State& out) const noexcept { hermite_from_start(y0, f0, y1, f1, t1 - t0, s / (t1 - t0), out); }
 };
 
 // One accepted step, as the replaying stepper reads it: its ends (exact), its extension inside (completed on
