@@ -645,3 +645,43 @@ TEST_CASE("free-running events: on_interpolant locates on the Hermite cubic of t
     CHECK(b.t < zeno_time(1.0, 9.81, 0.7));
     CHECK(lowest >= -floor_tolerance<double>());
 }
+
+TEST_CASE("free-running events: the replaying stepper reads the step, and refuses to re-step from elsewhere") {
+    // The contract the free-running loop relies on (detail::replaying_stepper): the engine's own stepper
+    // gives the step's end once, then asks for a restart; a copy re-steps s after the step's start from its
+    // extension, and a re-step from any other start (t or y) asks for the restart too.
+    using state = std::array<double, 2>;
+    using engine_type = dp5<double>;
+    auto f = [](double, const state& s) { return state{s[1], -9.81}; };
+    using replayed_type = odestep::detail::replayed_step<engine_type, decltype(f), state>;
+    engine_type engine;
+    engine.set_step_size(0.25);  // (free fall: a zero error estimate, the step is accepted)
+    replayed_type replayed(engine, f);
+    state y{1.0, 0.0};
+    double t = 0.0;
+    bool accepted = false;
+    while (!accepted) REQUIRE(engine.attempt(f, t, y, 0.25, accepted, replayed.ext.sink()) == odestep::status::ok);
+    REQUIRE(t == 0.25);
+    replayed.begin(0.0, state{1.0, 0.0}, t, y);
+    odestep::detail::replaying_stepper<replayed_type, state> own(replayed);
+    state u{1.0, 0.0};
+    CHECK(own.step(f, u, 0.0, 0.25) == odestep::status::ok);
+    CHECK(u == y);
+    auto copy = own;
+    state w{1.0, 0.0};
+    CHECK(copy.step(f, w, 0.0, 0.125) == odestep::status::ok);
+    // free fall from 1 m: the extension is exact for the quadratic, to rounding
+    CHECK(std::abs(w[0] - (1.0 - 9.81 * 0.125 * 0.125 / 2.0)) <= 1e-15);
+    CHECK(std::abs(w[1] + 9.81 * 0.125) <= 1e-14);
+    CHECK(!replayed.restart);
+    state elsewhere{0.5, 0.0};
+    CHECK(copy.step(f, elsewhere, 0.0, 0.125) != odestep::status::ok);
+    CHECK(replayed.restart);
+    replayed.restart = false;
+    state later{1.0, 0.0};
+    CHECK(copy.step(f, later, 0.125, 0.0625) != odestep::status::ok);
+    CHECK(replayed.restart);
+    replayed.restart = false;
+    CHECK(own.step(f, u, 0.125, 0.125) != odestep::status::ok);  // the engine's stepper, a second time
+    CHECK(replayed.restart);
+}

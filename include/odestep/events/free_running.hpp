@@ -258,7 +258,12 @@ public:
             r_->restart = true;  // (the engine returns at the event, y the state its actions left)
             return status::stopped_by_event;
         }
-        (void)t;  // (always the step's start: the engine re-steps from there)
+        // A re-step from anywhere but the replayed step's start (the rest of a step after an action, were the
+        // engine to take it on a copy) cannot be read from this extension: the same restart as above.
+        if (!(t == r_->t_s) || !same_values(y, r_->y_s)) {
+            r_->restart = true;
+            return status::stopped_by_event;
+        }
         if (r_->h > T(0) ? s > r_->h : s < r_->h) s = r_->h;
         return r_->state_after(s, y);
     }
