@@ -131,7 +131,9 @@ integrate_result<value_type_t<State>> sampled_run(Engine& engine, System& f, Sta
 /// non_finite (f gave NaN or Inf; that step was not taken), step_too_small, substep_limit (max_attempts
 /// reached before t1).
 template <class Method, class State, class System, class Observer,
-          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>> && !detail::is_solution_v<Observer>, int> = 0>
+          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>> && !detail::is_solution_v<Observer> &&
+                               !detail::is_event_set_v<Observer>,
+                           int> = 0>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(adaptive_rk<Method, State>& engine, System&& f,
                                                                        State& y, detail::time_t_of<State> t0,
                                                                        detail::time_t_of<State> t1, Observer&& observe,

@@ -9,6 +9,7 @@
 //   engine.hpp     one step with events: the quiet step, the scan, the location, the firings, the restart
 //   integrate.hpp  integrate with events (the driving loop over [t0, t1])
 //   stepper.hpp    event_stepper, the per-tick loop
+//   free_running.hpp  integrate_adaptive and integrate_times with events (the free-running loops)
 #ifndef ODESTEP_EVENTS_EVENTS_HPP
 #define ODESTEP_EVENTS_EVENTS_HPP
 
@@ -16,6 +17,7 @@
 #include "bounds.hpp"
 #include "engine.hpp"
 #include "event.hpp"
+#include "free_running.hpp"
 #include "integrate.hpp"
 #include "stepper.hpp"
 

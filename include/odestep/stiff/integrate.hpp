@@ -30,7 +30,7 @@ namespace odestep {
 /// invalid_time (t0 or t1 not finite), nothing evaluated or observed; non_finite, singular_matrix,
 /// step_too_small (see odestep::radau5); substep_limit (max_attempts reached before t1).
 template <class State, class System, class Observer,
-          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>>, int> = 0>
+          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>> && !detail::is_event_set_v<Observer>, int> = 0>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(radau5<State>& engine, System&& f, State& y,
                                                                        detail::time_t_of<State> t0,
                                                                        detail::time_t_of<State> t1, Observer&& observe,
@@ -51,7 +51,7 @@ template <class State, class System>
 /// integrate_adaptive with a Rosenbrock pair (odestep::rosenbrock_adaptive): the same contract as with the
 /// Radau IIA 5 engine, at most rhs_evals_to_start + max_attempts * rhs_evals_per_attempt evaluations of f.
 template <class Method, class State, class System, class Observer,
-          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>>, int> = 0>
+          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>> && !detail::is_event_set_v<Observer>, int> = 0>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(rosenbrock_adaptive<Method, State>& engine,
                                                                        System&& f, State& y,
                                                                        detail::time_t_of<State> t0,
