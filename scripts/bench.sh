@@ -31,9 +31,11 @@
 #                              (the default: padded) and its maximum; prints a markdown table, writes nothing
 #                              in the tree. The quick gate also runs this case (-O2, maximum 8, exact sizes 8)
 #                              and passes if odestep_step_d costs at most 1.20x the C++ step.
-#   scripts/bench.sh --large   large states (bench/large_state.cpp, issue 27 item 1): RK4 and velocity Verlet at
-#                              N = 2 .. 10,000 components, float and double, at -O2, -O3 and -O3 -march=native,
-#                              against plain and checked hand loops that vectorize; prints a markdown table of
+#   scripts/bench.sh --large   large states (bench/large_state.cpp, issue 27 item 1): RK4, DP 5(4) with its
+#                              estimate and velocity Verlet at N = 2 .. 10,000 components, float and double, at
+#                              -O2, -O3 and -O3 -mavx2 -mfma (valgrind cannot run AVX-512, which -march=native
+#                              may select), against plain and checked hand loops that vectorize; prints a
+#                              markdown table of
 #                              instructions per step and the ratios (targets 1.05, reported, not asserted);
 #                              writes the section "Large states" of bench/RESULTS.md, nothing else (1 to 2
 #                              minutes).
@@ -330,7 +332,7 @@ if ((large)); then
   awk -F'\t' '{ split($2, d, " "); key = d[1] "\t" d[2] "\t" d[3] "\t" $1; ir[key, d[4]] = $3 / d[5]
                  if (!(key in seen)) { seen[key] = 1; order[++n] = key } }
     END { for (i = 1; i <= n; ++i) { k = order[i]; split(k, p, "\t")
-            printf "| %s | %s | %s | %s | %.1f | %.1f | %.3f | %.1f | %.1f | %.3f |\n", p[1] == "vv" ? "velocity Verlet" : "RK4",
+            printf "| %s | %s | %s | %s | %.1f | %.1f | %.3f | %.1f | %.1f | %.3f |\n", p[1] == "vv" ? "velocity Verlet" : p[1] == "dp54" ? "DP 5(4) + estimate" : "RK4",
               p[2], p[3], p[4], ir[k, "odestep"], ir[k, "hand_checked"], ir[k, "odestep"] / ir[k, "hand_checked"],
               ir[k, "odestep_unchecked"], ir[k, "hand"], ir[k, "odestep_unchecked"] / ir[k, "hand"] } }' \
     "$dir/large.tsv" | sort -t'|' -k2,2 -k3,3 -k4,4n -s
