@@ -40,6 +40,14 @@
 #                              (the default: padded) and its maximum; prints a markdown table, writes nothing
 #                              in the tree. The quick gate also runs this case (-O2, maximum 8, exact sizes 8)
 #                              and passes if odestep_step_d costs at most 1.20x the C++ step.
+#   scripts/bench.sh --large   large states (bench/large_state.cpp, issue 27 item 1): RK4, DP 5(4) with its
+#                              estimate and velocity Verlet at N = 2 .. 10,000 components, float and double, at
+#                              -O2, -O3 and -O3 -mavx2 -mfma (valgrind cannot run AVX-512, which -march=native
+#                              may select), against plain and checked hand loops that vectorize; prints a
+#                              markdown table of
+#                              instructions per step and the ratios (targets 1.05, reported, not asserted);
+#                              writes the section "Large states" of bench/RESULTS.md, nothing else (1 to 2
+#                              minutes).
 # All end with the line "bench: N passed, M failed".
 #
 # Environment: CXX (default g++), JOBS (parallel compiles, default nproc), BENCH_ROUNDS (timing rounds,
@@ -55,9 +63,11 @@ quick=0
 work_precision=0
 stiff_wp=0
 c_api=0
+large=0
 case "${1:-}" in
   --quick) quick=1 ;;
   --c-api) c_api=1 ;;
+  --large) large=1 ;;
   --work-precision) work_precision=1 ;;
   --stiff-work-precision) stiff_wp=1 ;;
   "") ;;
@@ -66,7 +76,7 @@ case "${1:-}" in
     exit 0
     ;;
   *)
-    echo "bench: unknown argument '$1' (use --quick, --work-precision, --stiff-work-precision, --c-api or nothing)" >&2
+    echo "bench: unknown argument '$1' (use --quick, --work-precision, --stiff-work-precision, --c-api, --large or nothing)" >&2
     exit 2
     ;;
 esac
@@ -294,6 +304,76 @@ if ((quick)); then
 fi
 
 # --- the C API mode -------------------------------------------------------------------------------------------
+# The section of bench/RESULTS.md that --large writes (to the next "## " heading); the full mode keeps it.
+large_heading='## Large states (issue 27 item 1)'
+large_section() { awk -v h="$large_heading" '$0 == h { p = 1; print; next } p && /^## / { p = 0 } p' "$1"; }
+if ((large)); then
+  start=$SECONDS
+  dir=$(mktemp -d "${TMPDIR:-/tmp}/odestep-bench.XXXXXX")
+  trap 'rm -rf "$dir"' EXIT
+  passed=0
+  failed=0
+  : > "$dir/large.tsv"
+  for opt in "-O2" "-O3" "-O3 -mavx2 -mfma"; do
+    tag=${opt// /_}
+    # shellcheck disable=SC2086 # opt is one or two flags
+    if "$CXX" "${common_flags[@]}" $opt -I"$root/include" "$root/bench/large_state.cpp" -o "$dir/large$tag" \
+      > "$dir/build$tag.log" 2>&1 && "$dir/large$tag" check > "$dir/check$tag.log" &&
+      (cd "$dir" && GLIBC_TUNABLES=glibc.cpu.x86_rep_movsb_threshold=1000000000 valgrind --tool=callgrind --callgrind-out-file="$dir/cg$tag" --collect-atstart=no \
+        '--toggle-collect=*::large_*' "$dir/large$tag" count > /dev/null 2>&1); then
+      passed=$((passed + 1))
+      for f in "$dir/cg$tag".*; do
+        desc=$(sed -n 's/^desc: Trigger: Client Request: //p' "$f")
+        [ -n "$desc" ] || continue
+        printf '%s\t%s\t%s\n' "$opt" "$desc" "$(sed -n 's/^summary: //p' "$f")" >> "$dir/large.tsv"
+      done
+    else
+      echo "bench: FAIL large_state $opt: build, agreement check or count failed" >&2
+      cat "$dir/build$tag.log" "$dir/check$tag.log" >&2 2> /dev/null
+      failed=$((failed + 1))
+    fi
+  done
+  # Callgrind counts each iteration of a `rep movsb` as an instruction, and glibc's memcpy uses one for
+  # blocks above a few kilobytes (the roll-back copies at N >= 1000): the tunable keeps memcpy in its vector
+  # loop, whose instructions are what the copy costs. large.tsv: opt, "method type N variant steps",
+  # instructions over the steps.
+  {
+  echo "| method | T | N | -O | odestep checked | hand checked | ratio | odestep unchecked | hand plain | ratio |"
+  echo "|---|---|--:|---|--:|--:|--:|--:|--:|--:|"
+  awk -F'\t' '{ split($2, d, " "); key = d[1] "\t" d[2] "\t" d[3] "\t" $1; ir[key, d[4]] = $3 / d[5]
+                 if (!(key in seen)) { seen[key] = 1; order[++n] = key } }
+    END { for (i = 1; i <= n; ++i) { k = order[i]; split(k, p, "\t")
+            printf "| %s | %s | %s | %s | %.1f | %.1f | %.3f | %.1f | %.1f | %.3f |\n", p[1] == "vv" ? "velocity Verlet" : p[1] == "dp54" ? "DP 5(4) + estimate" : "RK4",
+              p[2], p[3], p[4], ir[k, "odestep"], ir[k, "hand_checked"], ir[k, "odestep"] / ir[k, "hand_checked"],
+              ir[k, "odestep_unchecked"], ir[k, "hand"], ir[k, "odestep_unchecked"] / ir[k, "hand"] } }' \
+    "$dir/large.tsv" | sort -t'|' -k2,2 -k3,3 -k4,4n -s
+  } > "$dir/table.md"
+  cat "$dir/table.md"
+  if ((failed == 0)); then
+    {
+      awk -v h="$large_heading" '$0 == h { skip = 1; next } skip && /^## / { skip = 0 } !skip' "$root/bench/RESULTS.md" |
+        sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'
+      printf '\n%s\n\n' "$large_heading"
+      cat << EOF
+Written by \`scripts/bench.sh --large\` (this section only; the full run keeps it as it is). Source:
+\`bench/large_state.cpp\`; discussion: docs/performance.md, "Large states". $("$CXX" --version | head -n 1),
+\`${common_flags[*]}\` and the -O of each row; instructions per step (callgrind, only inside each variant's
+step function; glibc's memcpy kept off \`rep movsb\`, see the script). RK4 on y' = -k y, velocity Verlet on
+x'' = -w^2 x (the acceleration kept by the caller; odestep's force returned by value, the hand loop's in
+place). ratio: odestep over the hand loop (target: at most 1.05).
+
+EOF
+      cat "$dir/table.md"
+    } > "$dir/RESULTS.md"
+    mv "$dir/RESULTS.md" "$root/bench/RESULTS.md"
+    echo "=== wrote the section \"${large_heading#\#\# }\" of bench/RESULTS.md"
+  fi
+  echo "bench: large-state mode took $((SECONDS - start))s ($("$CXX" --version | head -n 1))"
+  summary "$passed" "$failed"
+  ((failed == 0))
+  exit $?
+fi
+
 if ((c_api)); then
   start=$SECONDS
   dir=$(mktemp -d "${TMPDIR:-/tmp}/odestep-bench.XXXXXX")
@@ -633,6 +713,7 @@ gsl=$(printf '#include <gsl/gsl_version.h>\nGSL_VERSION\n' | "$CXX" -x c++ -E -P
 vg=$(valgrind --version)
 kept_wp=$(wp_section "$root/bench/RESULTS.md")
 kept_swp=$(swp_section "$root/bench/RESULTS.md")
+kept_large=$(large_section "$root/bench/RESULTS.md")
 
 {
   cat << EOF
@@ -848,6 +929,8 @@ EOF
   # The work-precision section (scripts/bench.sh --work-precision) is not measured here: kept as it was.
   [ -z "$kept_wp" ] || printf '\n%s\n' "$kept_wp"
   [ -z "$kept_swp" ] || printf '\n%s\n' "$kept_swp"
+  # Nor the large-state section (scripts/bench.sh --large).
+  [ -z "$kept_large" ] || printf '\n%s\n' "$kept_large"
 } > "$root/bench/RESULTS.md"
 
 echo

@@ -226,9 +226,12 @@ struct explicit_stages {
     /// user's f may trap on NaN or index a table by y); otherwise returns true. The stage with c = 1 is
     /// evaluated at t_end (t + h as the caller has it), the others at t + c_i h. If the b row is evaluated,
     /// `next` is y_{n+1}.
+    /// Always inlined: the checked and the unchecked step of one table, State and f share this one
+    /// instantiation, and GCC at -O2 does not inline a function this large that has two callers, so a
+    /// program using both policies would otherwise pay a call and the stages' spills in each step.
     template <bool StopAtNonFinite, class System, bool... Evaluate>
-    static bool run(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k, State& next,
-                    std::integer_sequence<bool, Evaluate...> evaluate) {
+    ODESTEP_INLINE static bool run(System& f, const State& y, T t, T h, T t_end, std::array<State, S>& k, State& next,
+                                   std::integer_sequence<bool, Evaluate...> evaluate) {
         return run<StopAtNonFinite>(f, y, t, h, t_end, k, next, evaluate, std::make_index_sequence<S>{});
     }
 
