@@ -185,10 +185,25 @@ typedef struct odestep_stepper_d {
     } storage;                                                              ///< not to be touched
 } odestep_stepper_d;
 
-/// What a fixed-step loop reports besides its status: the time of the state and the steps completed.
+/// What a loop did, counted (the C++ odestep::counts, member for member; see docs/reference.md). A member is
+/// zero for work the method does not do.
+typedef struct odestep_counts {
+    uint64_t rhs_evals;          ///< evaluations of f (or of the acceleration a)
+    uint64_t jacobian_evals;     ///< Jacobians formed (the system's own or by differences)
+    uint64_t event_evals;        ///< evaluations of event functions g
+    uint64_t factorizations;     ///< LU factorizations
+    uint64_t newton_iterations;  ///< Newton iterations
+    uint64_t accepted_steps;     ///< steps that stand (a fixed-step loop: its completed steps)
+    uint64_t rejected_steps;     ///< attempts rejected by an error-controlled method
+    uint64_t firings;            ///< event firings
+} odestep_counts;
+
+/// What a fixed-step loop reports besides its status: the time of the state, the steps completed and the
+/// counts of the call.
 typedef struct odestep_run_d {
-    double t;        ///< the time of the state (t1, or the last good time on failure)
-    uint64_t steps;  ///< steps completed
+    double t;               ///< the time of the state (t1, or the last good time on failure)
+    uint64_t steps;         ///< steps completed
+    odestep_counts counts;  ///< evaluations of f and steps of the call
 } odestep_run_d;
 
 /// The observer of odestep_integrate_d: called with the initial state and after every step.
@@ -463,8 +478,9 @@ typedef struct odestep_stepper_f {
 
 /// What a float loop reports (see odestep_run_d).
 typedef struct odestep_run_f {
-    float t;         ///< the time of the state
-    uint64_t steps;  ///< steps completed
+    float t;                ///< the time of the state
+    uint64_t steps;         ///< steps completed
+    odestep_counts counts;  ///< evaluations of f and steps of the call
 } odestep_run_f;
 
 /// The observer of odestep_integrate_f.

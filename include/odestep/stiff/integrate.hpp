@@ -85,7 +85,7 @@ template <class State, class System, class Times, class Observer>
                                                                     Observer&& observe,
                                                                     step_count max_attempts = default_max_attempts) {
     radau5_dense<State> dense;
-    return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense, [] { return status::ok; });
+    return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense, [](auto&) { return status::ok; });
 }
 
 }  // namespace odestep
