@@ -165,6 +165,78 @@ TEST_CASE("counts: integrate with events reports f, g and the firings (re-steppi
     }
 }
 
+TEST_CASE("counts: the per-tick event loop counts since start, the quiet ticks' work derived") {
+    const auto bounce = [](double, S2& y) { y[1] = -0.9 * y[1]; };
+    SUBCASE("RK4, a bounce, a terminal event that stops inside a tick, then catching up") {
+        step_count f_calls = 0;
+        step_count g_calls = 0;
+        step_count h_calls = 0;
+        auto f = count_calls(ball, &f_calls);
+        auto g = count_calls([](double, const S2& y) { return y[0]; }, &g_calls);
+        // terminal when the ball first passes 0.5 m on the way up after the bounce
+        auto up = count_calls([](double, const S2& y) { return y[0] - 0.5; }, &h_calls);
+        auto loop = odestep::make_event_stepper(
+            odestep::rk4<S2>{}, odestep::watch(odestep::make_event<S2>(g, odestep::direction::falling, bounce),
+                                               odestep::make_event<S2>(up, odestep::direction::rising)));
+        S2 y{1.0, 0.0};
+        REQUIRE(loop.start(0.0, 0.01, y) == odestep::status::ok);
+        std::size_t stops = 0;
+        for (int k = 0; k < 150; ++k) {
+            const auto r = loop.tick(f, y);
+            REQUIRE((r.status == odestep::status::ok || r.status == odestep::status::stopped_by_event));
+            if (r.status == odestep::status::stopped_by_event) ++stops;
+        }
+        REQUIRE(stops == 2);  // rising through 0.5 m after each of the first two landings (0.45 s, 1.26 s)
+        const odestep::counts c = loop.counts();
+        CHECK(c.rhs_evals == f_calls);
+        CHECK(c.event_evals == g_calls + h_calls);
+        CHECK(c.firings == loop.firings(0) + loop.firings(1));
+        CHECK(c.firings >= 2);
+        CHECK(c.accepted_steps == loop.reached());
+        // a second start counts afresh
+        f_calls = g_calls = h_calls = 0;
+        REQUIRE(loop.start(0.0, 0.01, y) == odestep::status::ok);
+        for (int k = 0; k < 10; ++k) REQUIRE(loop.tick(f, y).status == odestep::status::ok);
+        CHECK(loop.counts().rhs_evals == f_calls);
+        CHECK(loop.counts().event_evals == g_calls + h_calls);
+        // a tick whose step fails (NaN from f) still made its evaluations
+        bool poisoned = true;
+        auto bad = count_calls(
+            [&](double t, const S2& u) {
+                return poisoned ? S2{std::numeric_limits<double>::quiet_NaN(), 0.0} : ball(t, u);
+            },
+            &f_calls);
+        CHECK(loop.tick(bad, y).status == odestep::status::non_finite);
+        poisoned = false;
+        CHECK(loop.tick(bad, y).status == odestep::status::ok);
+        CHECK(loop.counts().rhs_evals == f_calls);
+        CHECK(loop.counts().event_evals == g_calls + h_calls);
+    }
+    SUBCASE("velocity Verlet (f counted call by call), and a tick whose step fails") {
+        step_count a_calls = 0;
+        step_count g_calls = 0;
+        bool poisoned = false;
+        auto a = count_calls(
+            [&](double, const S1&) { return S1{poisoned ? std::numeric_limits<double>::quiet_NaN() : -9.81}; },
+            &a_calls);
+        auto g = count_calls([](double, const S1& x, const S1&) { return x[0]; }, &g_calls);
+        auto loop = odestep::make_event_stepper(
+            odestep::velocity_verlet<S1>{},
+            odestep::watch(odestep::make_event<S1>(g, odestep::direction::falling, odestep::record)));
+        S1 x{1.0};
+        S1 v{0.0};
+        REQUIRE(loop.start(0.0, 0.01, x, v) == odestep::status::ok);
+        for (int k = 0; k < 60; ++k) REQUIRE(loop.tick(a, x, v).status == odestep::status::ok);
+        poisoned = true;
+        CHECK(loop.tick(a, x, v).status == odestep::status::non_finite);
+        const odestep::counts c = loop.counts();
+        CHECK(c.rhs_evals == a_calls);
+        CHECK(c.event_evals == g_calls);
+        CHECK(c.firings == 1);  // lands at 0.4515 s
+        CHECK(c.accepted_steps == 60);
+    }
+}
+
 TEST_CASE("counts: the free-running adaptive loops report f, accepted and rejected steps") {
     step_count observed = 0;
     const auto observe = [&](double, const S2&) { ++observed; };

@@ -89,20 +89,17 @@ struct has_implicit_work<S, std::void_t<decltype(S::jacobians_per_step), decltyp
     : std::true_type {};
 
 // The Jacobians and factorizations of `calls` step calls of a fixed-step stepper that publishes
-// jacobians_per_step and factorizations_per_step (implicit_rk, rosenbrock): each call forms them (the
-// system's own Jacobian is counted by the tally instead).
-template <class Stepper, class System, class State>
-void add_implicit_work(counts& c, step_count calls, const evaluation_tally& tally) noexcept {
+// jacobians_per_step and factorizations_per_step (implicit_rk, rosenbrock): each call forms them, the system's
+// own Jacobian (own_jacobian: counted by the tally) or one by differences.
+template <class Stepper>
+void add_implicit_work(counts& c, step_count calls, const evaluation_tally& tally, bool own_jacobian) noexcept {
     using S = std::remove_cv_t<std::remove_reference_t<Stepper>>;
+    c.jacobian_evals = tally.jacobian;
     if constexpr (has_implicit_work<S>::value) {
-        if constexpr (has_jacobian_v<std::remove_cv_t<std::remove_reference_t<System>>, State>) {
-            c.jacobian_evals = tally.jacobian;
-        } else {
-            c.jacobian_evals = calls * static_cast<step_count>(S::jacobians_per_step);
-        }
+        if (!own_jacobian) c.jacobian_evals = calls * static_cast<step_count>(S::jacobians_per_step);
         c.factorizations = calls * static_cast<step_count>(S::factorizations_per_step);
     } else {
-        c.jacobian_evals = tally.jacobian;
+        (void)calls, (void)own_jacobian;
     }
 }
 

@@ -173,7 +173,7 @@ integrate_result<T> drive(Stepper& stepper, System& f, Observer& observe, status
         if constexpr (has_engine<S>::value) {
             c = engine_work(stepper.engine(), before, tally);
         } else {
-            add_implicit_work<S, System, First>(c, calls, tally);
+            add_implicit_work<S>(c, calls, tally, has_jacobian_v<std::remove_cv_t<System>, First>);
             c.accepted_steps = r.steps;
             c.rhs_evals = exact_rhs_evals_v<S> ? calls * static_cast<step_count>(S::rhs_evals_per_step) : tally.rhs;
         }

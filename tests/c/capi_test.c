@@ -895,6 +895,49 @@ static void test_counts(void) {
     }
 }
 
+/* The event loop's counts since start: f and g counted by themselves (ctx), the bounces by the action. */
+typedef struct counted_ball {
+    uint64_t f_calls;
+    uint64_t g_calls;
+    int bounces;
+} counted_ball;
+static void counted_ball_d(double t, const double* y, double* dydt, void* ctx) {
+    ++((counted_ball*)ctx)->f_calls;
+    ball_d(t, y, dydt, NULL);
+}
+static double counted_height_d(double t, const double* y, void* ctx) {
+    ++((counted_ball*)ctx)->g_calls;
+    return height_d(t, y, NULL);
+}
+static odestep_event_result counted_bounce_d(double t, double* y, void* ctx) {
+    return bounce_d(t, y, &((counted_ball*)ctx)->bounces);
+}
+static void test_event_counts(void) {
+    odestep_event_loop_d loop;
+    counted_ball c = {0, 0, 0};
+    const odestep_system_d sys = {counted_ball_d, &c, 2};
+    odestep_event_d ground;
+    odestep_counts counts;
+    double y[2] = {1.0, 0.0};
+    int k;
+    (void)memset(&ground, 0, sizeof ground);
+    ground.g = counted_height_d;
+    ground.direction = ODESTEP_FALLING;
+    ground.action = counted_bounce_d;
+    ground.ctx = &c;
+    (void)memset(&loop, 0, sizeof loop);
+    CHECK(odestep_event_loop_counts_d(&loop, &counts) == ODESTEP_INVALID_TIME); /* before start */
+    CHECK(odestep_event_loop_counts_d(&loop, NULL) == ODESTEP_INVALID_SETTING);
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, &ground, 1, NULL, &sys, y, 0.0, 0.01) == ODESTEP_OK);
+    for (k = 0; k < 200; ++k) CHECK(odestep_event_loop_tick_d(&loop, &sys, y, NULL) == ODESTEP_OK);
+    CHECK(odestep_event_loop_counts_d(&loop, &counts) == ODESTEP_OK);
+    CHECK(counts.rhs_evals == c.f_calls);
+    CHECK(counts.event_evals == c.g_calls);
+    CHECK(counts.firings == (uint64_t)c.bounces && c.bounces == 3);
+    CHECK(counts.accepted_steps == 200);
+    CHECK(counts.jacobian_evals == 0 && counts.factorizations == 0 && counts.rejected_steps == 0);
+}
+
 int main(void) {
     test_rk4_decay();
     test_euler_decay();
@@ -919,6 +962,7 @@ int main(void) {
     test_verlet_kept();
     test_every_status();
     test_counts();
+    test_event_counts();
     (void)printf("c api tests: %d failed checks\n", check_failures);
     return check_failures == 0 ? 0 : 1;
 }

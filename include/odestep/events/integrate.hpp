@@ -42,7 +42,7 @@ event_integrate_result<T, Set::size> drive_events_on(Stepper& stepper, System& f
         // failed; the engine counted the rest where it did it.
         const step_count calls = advances + engine.work.steps;
         counts& c = r.counts;
-        add_implicit_work<S, System, State>(c, calls, tally);
+        add_implicit_work<S>(c, calls, tally, has_jacobian_v<std::remove_cv_t<System>, State>);
         c.rhs_evals =
             exact_rhs_evals_v<S> ? calls * static_cast<step_count>(S::rhs_evals_per_step) + engine.work.rhs : tally.rhs;
         c.event_evals = (advances - engine.work.failed_steps) * Set::size + engine.work.g;
