@@ -55,12 +55,18 @@ struct event_types<float> {
     using newton_action = odestep_newton_event_action_f;
 };
 
-/// g(t, y) of one C event; without a function (an unused slot), the constant 1.
+/// g(t, y) of one C event; without a function (an unused slot), the constant 1. `calls` counts the calls of
+/// g (the loop's copy of the event keeps it: event_counts).
 template <class T>
 struct c_g {
     typename event_types<T>::g g;
     void* ctx;
-    T operator()(T t, const state<T>& y) const { return g != nullptr ? g(t, y.data(), ctx) : T(1); }
+    mutable step_count calls = 0;
+    T operator()(T t, const state<T>& y) const {
+        if (g == nullptr) return T(1);
+        ++calls;
+        return g(t, y.data(), ctx);
+    }
 };
 
 /// The action of one C event; without a function, a terminal event.
@@ -79,8 +85,11 @@ template <class T>
 struct c_newton_g {
     typename event_types<T>::newton_g g;
     void* ctx;
+    mutable step_count calls = 0;  ///< (as c_g's)
     T operator()(T t, const state<T>& x, const state<T>& v) const {
-        return g != nullptr ? g(t, x.data(), v.data(), ctx) : T(1);
+        if (g == nullptr) return T(1);
+        ++calls;
+        return g(t, x.data(), v.data(), ctx);
     }
 };
 
@@ -95,11 +104,14 @@ struct c_newton_action {
     }
 };
 
-/// The loop's stepper: a C method and its stepper object, held by value.
+/// The loop's stepper: a C method and its stepper object, held by value. exact_rhs_evals only keeps the
+/// loop from wrapping f: c_rhs counts every evaluation into `evaluations` (see event_counts).
 template <class T>
 struct owning_adapter : stepper_defaults<state<T>> {
     static constexpr int order = 1;
     static constexpr std::size_t rhs_evals_per_step = 1;
+    static constexpr bool exact_rhs_evals = true;
+    step_count evaluations = 0;
     const method_ops<T>* m = nullptr;
     alignas(stepper_t<T>) unsigned char storage[sizeof(stepper_t<T>::storage)] = {};
     status step(const c_rhs<T>& f, state<T>& y, T t, T dt) { return m->step(storage, f, y, t, dt, nullptr, nullptr); }
@@ -112,7 +124,9 @@ template <class T>
 struct owning_newton_adapter : stepper_defaults<state<T>> {
     static constexpr int order = 1;
     static constexpr std::size_t rhs_evals_per_step = 1;
+    static constexpr bool exact_rhs_evals = true;  ///< (see owning_adapter)
     static constexpr system_form system = system_form::newtonian;
+    step_count evaluations = 0;
     const method_ops<T>* m = nullptr;
     alignas(stepper_t<T>) unsigned char storage[sizeof(stepper_t<T>::storage)] = {};
     status step(const c_accel<T>& a, state<T>& x, state<T>& v, T t, T dt) {
@@ -258,10 +272,10 @@ odestep_status event_tick(typename kind<T, Newton>::c_loop* loop, const typename
     tick_result<T, ODESTEP_C_TICK_FIRINGS> r;
     if constexpr (Newton) {
         state<T> vs = load(v, sys->n);
-        r = lp.tick(typename K::system_adapter{sys}, ys, vs);
+        r = lp.tick(typename K::system_adapter{sys, &lp.stepper().evaluations}, ys, vs);
         store(v, vs, sys->n);
     } else {
-        r = lp.tick(typename K::system_adapter{sys}, ys);
+        r = lp.tick(typename K::system_adapter{sys, &lp.stepper().evaluations}, ys);
     }
     store(y, ys, sys->n);  // the state at r.t, whatever the status
     if (tick != nullptr) {
@@ -293,6 +307,24 @@ template <class T, bool Newton>
 T event_time(const typename kind<T, Newton>::c_loop* loop) {
     if (loop == nullptr || loop->n == 0) return std::numeric_limits<T>::quiet_NaN();
     return loop_object<T, Newton>(loop).time();
+}
+
+/// What the loop did since start (event_stepper::counts), with f's and g's evaluations as c_rhs and c_g
+/// counted them (the unused slots' constant g is no evaluation).
+template <class T, bool Newton>
+odestep_status event_counts(const typename kind<T, Newton>::c_loop* loop, odestep_counts* out) {
+    if (out == nullptr) return ODESTEP_INVALID_SETTING;
+    *out = odestep_counts{};
+    if (loop == nullptr || loop->n == 0) return ODESTEP_INVALID_TIME;
+    const loop_t<T, Newton>& lp = loop_object<T, Newton>(loop);
+    const counts c = lp.counts();
+    out->rhs_evals = lp.stepper().evaluations;
+    step_count g_calls = 0;
+    std::apply([&](const auto&... e) { ((g_calls += e.g.calls), ...); }, lp.events().events);
+    out->event_evals = g_calls;
+    out->accepted_steps = c.accepted_steps;
+    out->firings = c.firings;
+    return ODESTEP_OK;
 }
 
 template <class T, bool Newton>

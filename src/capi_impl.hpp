@@ -82,7 +82,9 @@ constexpr odestep_status to_c(status s) noexcept { return static_cast<odestep_st
 template <class T>
 struct c_rhs {
     const typename c_types<T>::system* sys;
+    step_count* calls = nullptr;  ///< the loops count every call here (the method is known only at run time)
     void operator()(T t, const state<T>& y, state<T>& dydt) const {
+        if (calls != nullptr) ++*calls;
         sys->f(t, y.data(), dydt.data(), sys->ctx);
         for (std::size_t i = sys->n; i < max_states; ++i) dydt[i] = T(0);
     }
@@ -92,7 +94,9 @@ struct c_rhs {
 template <class T>
 struct c_accel {
     const typename c_types<T>::newton* sys;
+    step_count* calls = nullptr;  ///< as c_rhs's
     state<T> operator()(T t, const state<T>& x) const {
+        if (calls != nullptr) ++*calls;
         state<T> a;
         sys->a(t, x.data(), a.data(), sys->ctx);
         for (std::size_t i = sys->n; i < max_states; ++i) a[i] = T(0);
@@ -568,11 +572,13 @@ ODESTEP_INLINE odestep_status step_newton(stepper_t<T>* s, const typename c_type
 
 /// The stepper of the loops: the C method behind the stepper interface the C++ loops take. Its traits are
 /// the loop's concern only (uniform_steps is checked by the C function before the loop, as the method's
-/// trait is known only at run time).
+/// trait is known only at run time). exact_rhs_evals only keeps the loop from wrapping f: c_rhs counts the
+/// evaluations itself, and the C function reports that count instead of the loop's.
 template <class T>
 struct first_order_adapter : stepper_defaults<state<T>> {
     static constexpr int order = 1;
     static constexpr std::size_t rhs_evals_per_step = 1;
+    static constexpr bool exact_rhs_evals = true;
     const method_ops<T>* m;
     void* storage;
     status step(const c_rhs<T>& f, state<T>& y, T t, T dt) const {
@@ -584,6 +590,7 @@ template <class T>
 struct newton_adapter : stepper_defaults<state<T>> {
     static constexpr int order = 1;
     static constexpr std::size_t rhs_evals_per_step = 1;
+    static constexpr bool exact_rhs_evals = true;  ///< (see first_order_adapter)
     static constexpr system_form system = system_form::newtonian;
     const method_ops<T>* m;
     void* storage;
@@ -604,10 +611,18 @@ status loop_preflight(const Adapter& stepper, T t0, T t1, T dt) noexcept {
 }
 
 template <class T>
-void report(typename c_types<T>::run* run, T t, step_count steps) noexcept {
+void report(typename c_types<T>::run* run, T t, step_count steps, const counts& c = {}) noexcept {
     if (run != nullptr) {
         run->t = t;
         run->steps = steps;
+        run->counts.rhs_evals = c.rhs_evals;
+        run->counts.jacobian_evals = c.jacobian_evals;
+        run->counts.event_evals = c.event_evals;
+        run->counts.factorizations = c.factorizations;
+        run->counts.newton_iterations = c.newton_iterations;
+        run->counts.accepted_steps = c.accepted_steps;
+        run->counts.rejected_steps = c.rejected_steps;
+        run->counts.firings = c.firings;
     }
 }
 
@@ -625,13 +640,15 @@ odestep_status integrate(stepper_t<T>* s, const typename c_types<T>::system* sys
     // the same n continue its history.
     bind<T>(s, sys->n, false, &m->padded);
     state<T> ys = load(y, sys->n);
-    const c_rhs<T> f{sys};
+    step_count calls = 0;
+    const c_rhs<T> f{sys, &calls};
     const auto watch = [observe, octx](T t, const state<T>& at) {
         if (observe != nullptr) observe(t, at.data(), octx);
     };
-    const integrate_result<T> r = odestep::integrate(stepper, f, ys, t0, t1, dt, watch);
+    integrate_result<T> r = odestep::integrate(stepper, f, ys, t0, t1, dt, watch);
     store(y, ys, sys->n);  // the state at r.t, the last good one
-    report<T>(run, r.t, r.steps);
+    r.counts.rhs_evals = calls;
+    report<T>(run, r.t, r.steps, r.counts);
     return to_c(r.status);
 }
 
@@ -650,14 +667,16 @@ odestep_status integrate_newton(stepper_t<T>* s, const typename c_types<T>::newt
     bind<T>(s, sys->n, true, &m->padded);  // as integrate's
     state<T> xs = load(x, sys->n);
     state<T> vs = load(v, sys->n);
-    const c_accel<T> a{sys};
+    step_count calls = 0;
+    const c_accel<T> a{sys, &calls};
     const auto watch = [observe, octx](T t, const state<T>& px, const state<T>& pv) {
         if (observe != nullptr) observe(t, px.data(), pv.data(), octx);
     };
-    const integrate_result<T> r = odestep::integrate(stepper, a, xs, vs, t0, t1, dt, watch);
+    integrate_result<T> r = odestep::integrate(stepper, a, xs, vs, t0, t1, dt, watch);
     store(x, xs, sys->n);
     store(v, vs, sys->n);
-    report<T>(run, r.t, r.steps);
+    r.counts.rhs_evals = calls;
+    report<T>(run, r.t, r.steps, r.counts);
     return to_c(r.status);
 }
 

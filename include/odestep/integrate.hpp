@@ -4,9 +4,11 @@
 #define ODESTEP_INTEGRATE_HPP
 
 #include <cstddef>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 
+#include "counts.hpp"
 #include "detail/grid_clock.hpp"
 #include "detail/ops.hpp"
 #include "detail/preflight.hpp"
@@ -17,12 +19,13 @@
 namespace odestep {
 
 /// What a driving loop reports. On failure `t` is the time of the caller's state (the last good one)
-/// and `steps` the number of steps that completed.
+/// and `steps` the number of steps that completed; `counts` what the call did (odestep::counts).
 template <class T>
 struct integrate_result {
-    odestep::status status;  ///< ok, or why the run stopped
-    T t;                     ///< the time of the state
-    step_count steps;        ///< steps completed
+    odestep::status status;    ///< ok, or why the run stopped
+    T t;                       ///< the time of the state
+    step_count steps;          ///< steps completed
+    odestep::counts counts{};  ///< evaluations, steps and the rest of the call's work
 };
 
 /// "No event", in results that name one.
@@ -108,17 +111,45 @@ template <system_form Form, class T, class Stepper, class System, class Observer
 integrate_result<T> drive(Stepper& stepper, System& f, Observer& observe, status planned, const grid_plan<T>& plan,
                           States&... ys) {
     if constexpr (!stepper_fits<Stepper, Form>()) {
-        return {status::invalid_step, plan.clock.t0, 0};  // not reached: stepper_fits stopped the compilation
+        return {status::invalid_step, plan.clock.t0, 0, {}};  // not reached: stepper_fits stopped the compilation
     } else {
         planned = preflight(stepper, planned, plan);
-        if (planned != status::ok) return {planned, plan.clock.t0, 0};
-        const run_outcome<T> r = run_grid(
-            plan,
-            [&](T t, T h, T) {
-                return step_outcome<T>{stepper.step(f, ys..., t, h), t, 0, no_event};
-            },
-            observe, ys...);
-        return {r.code, r.t, r.steps};
+        if (planned != status::ok) return {planned, plan.clock.t0, 0, {}};
+        using S = std::remove_cv_t<std::remove_reference_t<Stepper>>;
+        using First = std::tuple_element_t<0, std::tuple<States...>>;
+        evaluation_tally tally;
+        counts before;
+        if constexpr (has_engine<S>::value) before = engine_counts(stepper.engine());
+        run_outcome<T> r;
+        if constexpr (exact_rhs_evals_v<S>) {
+            // f uncounted: every step call makes rhs_evals_per_step evaluations
+            r = run_grid(
+                plan,
+                [&](T t, T h, T) {
+                    return step_outcome<T>{stepper.step(f, ys..., t, h), t, 0, no_event};
+                },
+                observe, ys...);
+        } else {
+            auto counted = counting(f, tally);
+            r = run_grid(
+                plan,
+                [&](T t, T h, T) {
+                    return step_outcome<T>{stepper.step(counted, ys..., t, h), t, 0, no_event};
+                },
+                observe, ys...);
+        }
+        // Step calls: the completed steps and the one that failed (run_grid stops at the first failure; an
+        // empty run fails without a call).
+        const step_count calls = r.steps + (r.code != status::ok && plan.steps != 0 ? 1 : 0);
+        counts c;
+        if constexpr (has_engine<S>::value) {
+            c = engine_work(stepper.engine(), before, tally);
+        } else {
+            add_implicit_work<S>(c, calls, tally, has_jacobian_v<std::remove_cv_t<System>, First>);
+            c.accepted_steps = r.steps;
+            c.rhs_evals = exact_rhs_evals_v<S> ? calls * static_cast<step_count>(S::rhs_evals_per_step) : tally.rhs;
+        }
+        return {r.code, r.t, r.steps, c};
     }
 }
 

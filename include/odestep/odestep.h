@@ -185,10 +185,25 @@ typedef struct odestep_stepper_d {
     } storage;                                                              ///< not to be touched
 } odestep_stepper_d;
 
-/// What a fixed-step loop reports besides its status: the time of the state and the steps completed.
+/// What a loop did, counted (the C++ odestep::counts, member for member; see docs/reference.md). A member is
+/// zero for work the method does not do.
+typedef struct odestep_counts {
+    uint64_t rhs_evals;          ///< evaluations of f (or of the acceleration a)
+    uint64_t jacobian_evals;     ///< Jacobians formed (the system's own or by differences)
+    uint64_t event_evals;        ///< evaluations of event functions g
+    uint64_t factorizations;     ///< LU factorizations
+    uint64_t newton_iterations;  ///< Newton iterations
+    uint64_t accepted_steps;     ///< steps that stand (a fixed-step loop: its completed steps)
+    uint64_t rejected_steps;     ///< attempts rejected by an error-controlled method
+    uint64_t firings;            ///< event firings
+} odestep_counts;
+
+/// What a fixed-step loop reports besides its status: the time of the state, the steps completed and the
+/// counts of the call.
 typedef struct odestep_run_d {
-    double t;        ///< the time of the state (t1, or the last good time on failure)
-    uint64_t steps;  ///< steps completed
+    double t;               ///< the time of the state (t1, or the last good time on failure)
+    uint64_t steps;         ///< steps completed
+    odestep_counts counts;  ///< evaluations of f and steps of the call
 } odestep_run_d;
 
 /// The observer of odestep_integrate_d: called with the initial state and after every step.
@@ -318,14 +333,15 @@ typedef struct odestep_tick_d {
 typedef struct odestep_event_loop_d {
     size_t n;  ///< the state size, set by a successful start (0 before)
     union {
-        unsigned char bytes[sizeof(odestep_stepper_d) +
-                            ((size_t)ODESTEP_C_MAX_EVENTS * ((12u * sizeof(void*)) + (8u * sizeof(double)))) +
-                            ((size_t)ODESTEP_C_TICK_FIRINGS * (sizeof(size_t) + sizeof(double))) +
-                            (8u * sizeof(double)) + (8u * sizeof(void*))];  ///< the C++ event_stepper
-        double align_scalar;                                                ///< alignment only
-        void* align_pointer;                                                ///< alignment only
-        uint64_t align_integer;                                             ///< alignment only
-    } storage;                                                              ///< not to be touched
+        unsigned char
+            bytes[sizeof(odestep_stepper_d) +
+                  ((size_t)ODESTEP_C_MAX_EVENTS * ((12u * sizeof(void*)) + (8u * sizeof(double)) + sizeof(uint64_t))) +
+                  ((size_t)ODESTEP_C_TICK_FIRINGS * (sizeof(size_t) + sizeof(double))) + (8u * sizeof(double)) +
+                  (8u * sizeof(void*)) + (12u * sizeof(uint64_t))];  ///< the C++ event_stepper
+        double align_scalar;                                         ///< alignment only
+        void* align_pointer;                                         ///< alignment only
+        uint64_t align_integer;                                      ///< alignment only
+    } storage;                                                       ///< not to be touched
 } odestep_event_loop_d;
 
 /// Starts a per-tick event loop: `method` steps `system` with ticks of dt from t0, watching `events[0]` to
@@ -358,6 +374,12 @@ double odestep_event_loop_time_d(const odestep_event_loop_d* loop);
 
 /// Firings of event i since start (0 for i out of range or before start).
 size_t odestep_event_loop_firings_d(const odestep_event_loop_d* loop, size_t i);
+
+/// What the loop did since start, into *counts: evaluations of f and of every g (the start's too), the grid
+/// times reached (accepted_steps) and the firings (the other members are zero). Ticks count nothing on their
+/// quiet path: one tick's counts are the difference of two readings. ODESTEP_INVALID_SETTING for a null
+/// counts, ODESTEP_INVALID_TIME (counts zeroed) before start.
+odestep_status odestep_event_loop_counts_d(const odestep_event_loop_d* loop, odestep_counts* counts);
 
 /* ---- events of Newton's equations (x and v) */
 
@@ -404,6 +426,8 @@ odestep_status odestep_newton_event_loop_rearm_d(odestep_newton_event_loop_d* lo
 double odestep_newton_event_loop_time_d(const odestep_newton_event_loop_d* loop);
 /// odestep_event_loop_firings_d of a Newtonian loop.
 size_t odestep_newton_event_loop_firings_d(const odestep_newton_event_loop_d* loop, size_t i);
+/// odestep_event_loop_counts_d of a Newtonian loop.
+odestep_status odestep_newton_event_loop_counts_d(const odestep_newton_event_loop_d* loop, odestep_counts* counts);
 
 /* ---- float: the same API in single precision (see the double functions for each one's contract) ------- */
 
@@ -463,8 +487,9 @@ typedef struct odestep_stepper_f {
 
 /// What a float loop reports (see odestep_run_d).
 typedef struct odestep_run_f {
-    float t;         ///< the time of the state
-    uint64_t steps;  ///< steps completed
+    float t;                ///< the time of the state
+    uint64_t steps;         ///< steps completed
+    odestep_counts counts;  ///< evaluations of f and steps of the call
 } odestep_run_f;
 
 /// The observer of odestep_integrate_f.
@@ -536,14 +561,15 @@ typedef struct odestep_tick_f {
 typedef struct odestep_event_loop_f {
     size_t n;  ///< the state size, set by a successful start (0 before)
     union {
-        unsigned char bytes[sizeof(odestep_stepper_f) +
-                            ((size_t)ODESTEP_C_MAX_EVENTS * ((12u * sizeof(void*)) + (8u * sizeof(float)))) +
-                            ((size_t)ODESTEP_C_TICK_FIRINGS * (sizeof(size_t) + sizeof(float))) + (8u * sizeof(float)) +
-                            (8u * sizeof(void*))];  ///< the C++ event_stepper
-        float align_scalar;                         ///< alignment only
-        void* align_pointer;                        ///< alignment only
-        uint64_t align_integer;                     ///< alignment only
-    } storage;                                      ///< not to be touched
+        unsigned char
+            bytes[sizeof(odestep_stepper_f) +
+                  ((size_t)ODESTEP_C_MAX_EVENTS * ((12u * sizeof(void*)) + (8u * sizeof(float)) + sizeof(uint64_t))) +
+                  ((size_t)ODESTEP_C_TICK_FIRINGS * (sizeof(size_t) + sizeof(float))) + (8u * sizeof(float)) +
+                  (8u * sizeof(void*)) + (12u * sizeof(uint64_t))];  ///< the C++ event_stepper
+        float align_scalar;                                          ///< alignment only
+        void* align_pointer;                                         ///< alignment only
+        uint64_t align_integer;                                      ///< alignment only
+    } storage;                                                       ///< not to be touched
 } odestep_event_loop_f;
 
 /// Starts a per-tick event loop: `method` steps `system` with ticks of dt from t0, watching `events[0]` to
@@ -576,6 +602,8 @@ float odestep_event_loop_time_f(const odestep_event_loop_f* loop);
 
 /// Firings of event i since start (0 for i out of range or before start).
 size_t odestep_event_loop_firings_f(const odestep_event_loop_f* loop, size_t i);
+/// odestep_event_loop_counts_d in float.
+odestep_status odestep_event_loop_counts_f(const odestep_event_loop_f* loop, odestep_counts* counts);
 
 /* ---- events of Newton's equations in float */
 
@@ -622,6 +650,8 @@ odestep_status odestep_newton_event_loop_rearm_f(odestep_newton_event_loop_f* lo
 float odestep_newton_event_loop_time_f(const odestep_newton_event_loop_f* loop);
 /// odestep_event_loop_firings_f of a Newtonian loop.
 size_t odestep_newton_event_loop_firings_f(const odestep_newton_event_loop_f* loop, size_t i);
+/// odestep_event_loop_counts_f of a Newtonian loop.
+odestep_status odestep_newton_event_loop_counts_f(const odestep_newton_event_loop_f* loop, odestep_counts* counts);
 
 /* ---- stiff and error-controlled steppers, and steps with their derivative (docs/c_api.md) ------------- */
 

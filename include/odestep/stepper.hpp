@@ -105,6 +105,9 @@ struct stepper_defaults {
     /// one is not finite (the `checked` policy, every library stepper's default). False for a stepper in its
     /// `unchecked` form, which promises nothing about a non-finite value (the caller validates elsewhere).
     static constexpr bool checks_finiteness = true;
+    /// Every `step` call makes exactly rhs_evals_per_step evaluations, whether it succeeds or not: the loops
+    /// then derive the count of a run (odestep::counts) from the calls instead of counting each evaluation.
+    static constexpr bool exact_rhs_evals = false;
 };
 
 /// THE trait list: every trait of stepper_defaults that a stepper must publish, with its type, in the order

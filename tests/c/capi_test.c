@@ -822,6 +822,122 @@ static void test_every_status(void) {
     CHECK(strcmp(odestep_status_name(ODESTEP_STEP_TOO_SMALL), "step_too_small") == 0);
 }
 
+/* ---- counts: the run's counts against the system's own count of its calls */
+
+/* y' = -y and x'' = -x that count their calls in *ctx. */
+static void counted_decay_d(double t, const double* y, double* dydt, void* ctx) {
+    (void)t;
+    ++*(uint64_t*)ctx;
+    dydt[0] = -y[0];
+}
+static void counted_decay_f(float t, const float* y, float* dydt, void* ctx) {
+    (void)t;
+    ++*(uint64_t*)ctx;
+    dydt[0] = -y[0];
+}
+static void spring_counting_ctx_d(double t, const double* x, double* a, void* ctx) {
+    (void)t;
+    ++*(uint64_t*)ctx;
+    a[0] = -x[0];
+}
+
+/* Every loop's run.counts: f's evaluations as f counted them (RK4: 4 a step; Adams-Bashforth 4: RK4's 4 for
+ * its first three steps, then 1; velocity Verlet in the loop: 1 a step and the first acceleration), the
+ * completed steps as accepted, zero for what a fixed-step explicit method does not do. */
+static void test_counts(void) {
+    const odestep_method_d* methods[3] = {&odestep_rk4_d, &odestep_ab4_d, &odestep_dop853_d};
+    size_t m;
+    for (m = 0; m < 3; ++m) {
+        uint64_t calls = 0;
+        const odestep_system_d sys = {counted_decay_d, &calls, 1};
+        odestep_stepper_d s;
+        double y = 1.0;
+        odestep_run_d run;
+        CHECK(odestep_stepper_init_d(&s, methods[m]) == ODESTEP_OK);
+        CHECK(odestep_integrate_d(&s, &sys, &y, 0.0, 1.0, 0.05, NULL, NULL, &run) == ODESTEP_OK);
+        CHECK(run.counts.rhs_evals == calls);
+        CHECK(run.counts.accepted_steps == run.steps && run.steps == 20);
+        CHECK(run.counts.rejected_steps == 0 && run.counts.jacobian_evals == 0 && run.counts.factorizations == 0);
+        CHECK(run.counts.newton_iterations == 0 && run.counts.event_evals == 0 && run.counts.firings == 0);
+    }
+    {
+        uint64_t calls = 0;
+        const odestep_system_d sys = {counted_decay_d, &calls, 1};
+        odestep_stepper_d s;
+        double y = 1.0;
+        odestep_run_d run;
+        CHECK(odestep_stepper_init_d(&s, &odestep_rk4_d) == ODESTEP_OK);
+        CHECK(odestep_integrate_d(&s, &sys, &y, 0.0, 1.0, 0.05, NULL, NULL, &run) == ODESTEP_OK);
+        CHECK(calls == 80); /* RK4: 4 evaluations a step, 20 steps */
+    }
+    {
+        uint64_t calls = 0;
+        const odestep_newton_d sys = {spring_counting_ctx_d, &calls, 1};
+        odestep_stepper_d s;
+        double x = 1.0;
+        double v = 0.0;
+        odestep_run_d run;
+        CHECK(odestep_stepper_init_d(&s, &odestep_velocity_verlet_d) == ODESTEP_OK);
+        CHECK(odestep_integrate_newton_d(&s, &sys, &x, &v, 0.0, 1.0, 0.1, NULL, NULL, &run) == ODESTEP_OK);
+        CHECK(run.counts.rhs_evals == calls);
+        CHECK(run.counts.accepted_steps == 10);
+    }
+    {
+        uint64_t calls = 0;
+        const odestep_system_f sys = {counted_decay_f, &calls, 1};
+        odestep_stepper_f s;
+        float y = 1.0f;
+        odestep_run_f run;
+        CHECK(odestep_stepper_init_f(&s, &odestep_rk4_f) == ODESTEP_OK);
+        CHECK(odestep_integrate_f(&s, &sys, &y, 0.0f, 1.0f, 0.25f, NULL, NULL, &run) == ODESTEP_OK);
+        CHECK(run.counts.rhs_evals == calls && calls == 16);
+        CHECK(run.counts.accepted_steps == 4);
+    }
+}
+
+/* The event loop's counts since start: f and g counted by themselves (ctx), the bounces by the action. */
+typedef struct counted_ball {
+    uint64_t f_calls;
+    uint64_t g_calls;
+    int bounces;
+} counted_ball;
+static void counted_ball_d(double t, const double* y, double* dydt, void* ctx) {
+    ++((counted_ball*)ctx)->f_calls;
+    ball_d(t, y, dydt, NULL);
+}
+static double counted_height_d(double t, const double* y, void* ctx) {
+    ++((counted_ball*)ctx)->g_calls;
+    return height_d(t, y, NULL);
+}
+static odestep_event_result counted_bounce_d(double t, double* y, void* ctx) {
+    return bounce_d(t, y, &((counted_ball*)ctx)->bounces);
+}
+static void test_event_counts(void) {
+    odestep_event_loop_d loop;
+    counted_ball c = {0, 0, 0};
+    const odestep_system_d sys = {counted_ball_d, &c, 2};
+    odestep_event_d ground;
+    odestep_counts counts;
+    double y[2] = {1.0, 0.0};
+    int k;
+    (void)memset(&ground, 0, sizeof ground);
+    ground.g = counted_height_d;
+    ground.direction = ODESTEP_FALLING;
+    ground.action = counted_bounce_d;
+    ground.ctx = &c;
+    (void)memset(&loop, 0, sizeof loop);
+    CHECK(odestep_event_loop_counts_d(&loop, &counts) == ODESTEP_INVALID_TIME); /* before start */
+    CHECK(odestep_event_loop_counts_d(&loop, NULL) == ODESTEP_INVALID_SETTING);
+    CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, &ground, 1, NULL, &sys, y, 0.0, 0.01) == ODESTEP_OK);
+    for (k = 0; k < 200; ++k) CHECK(odestep_event_loop_tick_d(&loop, &sys, y, NULL) == ODESTEP_OK);
+    CHECK(odestep_event_loop_counts_d(&loop, &counts) == ODESTEP_OK);
+    CHECK(counts.rhs_evals == c.f_calls);
+    CHECK(counts.event_evals == c.g_calls);
+    CHECK(counts.firings == (uint64_t)c.bounces && c.bounces == 3);
+    CHECK(counts.accepted_steps == 200);
+    CHECK(counts.jacobian_evals == 0 && counts.factorizations == 0 && counts.rejected_steps == 0);
+}
+
 int main(void) {
     test_rk4_decay();
     test_euler_decay();
@@ -845,6 +961,8 @@ int main(void) {
     test_newton_events();
     test_verlet_kept();
     test_every_status();
+    test_counts();
+    test_event_counts();
     (void)printf("c api tests: %d failed checks\n", check_failures);
     return check_failures == 0 ? 0 : 1;
 }

@@ -143,7 +143,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const double dt = in.number<double>();
         const double t1 = in.index(2) == 0 ? in.number<double>() : t0 + double(in.byte() % 64) * dt;
         watch w{&f, n, t0, dt, evals_bound};
-        odestep_run_d run{-1.0, 77};
+        odestep_run_d run{-1.0, 77, {}};
         const buffer x0 = x;
         const buffer v0 = v;
         const odestep_status s =
@@ -160,6 +160,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         ODESTEP_FUZZ_CHECK(!rejects(s), "an argument rejected after the loop had begun");
         ODESTEP_FUZZ_CHECK(w.observed > 0 && run.steps + 1 == w.observed, "run.steps does not match the observations");
         ODESTEP_FUZZ_CHECK(run.t == w.last_t, "run.t is not the time of the last observation");
+        ODESTEP_FUZZ_CHECK(run.counts.rhs_evals == static_cast<std::uint64_t>(f.evaluations),
+                           "run.counts.rhs_evals differs from the evaluations f counted");
+        ODESTEP_FUZZ_CHECK(run.counts.accepted_steps == run.steps, "run.counts.accepted_steps is not run.steps");
         buffer xn{};
         for (std::size_t i = 0; i < n; ++i) xn[i] = x[i];
         ODESTEP_FUZZ_CHECK(same(xn, w.last_x), "the loop's state is not the last one observed");

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <type_traits>
 
+#include "../counts.hpp"
 #include "../detail/grid_clock.hpp"
 #include "../detail/ops.hpp"
 #include "../detail/preflight.hpp"
@@ -38,22 +39,28 @@ integrate_result<value_type_t<State>> free_running(Engine& engine, System& f, St
                                                    value_type_t<State> t1, Observer& observe, step_count max_attempts) {
     using T = value_type_t<State>;
     status s = preflight(engine, t0, t1, max_attempts);
-    if (s != status::ok) return {s, t0, 0};
+    if (s != status::ok) return {s, t0, 0, {}};
     observe(t0, static_cast<const State&>(y));
-    if (t0 == t1 && !all_finite(y)) return {status::non_finite, t0, 0};
+    if (t0 == t1 && !all_finite(y)) return {status::non_finite, t0, 0, {}};
+    const counts before = engine_counts(engine);
+    evaluation_tally tally;
+    auto counted = counting(f, tally);
+    const auto done = [&](status code, T t_end, step_count steps) {
+        return integrate_result<T>{code, t_end, steps, engine_work(engine, before, tally)};
+    };
     T t = t0;
     step_count accepted = 0;
     for (step_count n = 0; n < max_attempts && t != t1; ++n) {
         bool ok = false;
-        s = engine.attempt(f, t, y, t1, ok);
-        if (s != status::ok) return {s, t, accepted};
+        s = engine.attempt(counted, t, y, t1, ok);
+        if (s != status::ok) return done(s, t, accepted);
         if (ok) {
             ++accepted;
             observe(t, static_cast<const State&>(y));
         }
     }
-    if (t != t1) return {status::substep_limit, t, accepted};
-    return {status::ok, t, accepted};
+    if (t != t1) return done(status::substep_limit, t, accepted);
+    return done(status::ok, t, accepted);
 }
 
 // What integrate_times checks before anything is evaluated (the same for every engine): the run's preflight
@@ -76,7 +83,7 @@ status check_times(const Engine& engine, T t0, const Times& times, step_count ma
 }
 
 // THE loop of integrate_times, for every engine with attempt(f, t, y, t_end, accepted, dense): the steps are
-// integrate_adaptive's, and each output time inside an accepted step comes from `dense` once complete() (the
+// integrate_adaptive's, and each output time inside an accepted step comes from `dense` once complete(f) (the
 // engine's extension: more evaluations for some pairs, none for Radau's polynomial) has returned ok.
 template <class Engine, class System, class State, class Times, class Observer, class Dense, class Complete>
 integrate_result<value_type_t<State>> sampled_run(Engine& engine, System& f, State& y, value_type_t<State> t0,
@@ -86,36 +93,43 @@ integrate_result<value_type_t<State>> sampled_run(Engine& engine, System& f, Sta
     const std::size_t count = times.size();
     T t1 = t0;
     status s = detail::check_times(engine, t0, times, max_attempts, t1);
-    if (s != status::ok || count == 0) return {s, t0, 0};
+    if (s != status::ok || count == 0) return {s, t0, 0, {}};
     const bool forward = !(t1 < t0);
     std::size_t next = 0;
     while (next < count && times[next] == t0) observe(times[next++], static_cast<const State&>(y));
-    if (next == count && !detail::all_finite(y)) return {status::non_finite, t0, 0};  // an empty run
+    if (next == count && !detail::all_finite(y)) return {status::non_finite, t0, 0, {}};  // an empty run
+    // Every evaluation counted: the attempts' and complete(counted)'s (the interpolant's extra stages).
+    const counts before = engine_counts(engine);
+    evaluation_tally tally;
+    auto counted = counting(f, tally);
+    const auto done = [&](status code, T t_end, step_count steps) {
+        return integrate_result<T>{code, t_end, steps, engine_work(engine, before, tally)};
+    };
     State u;
     T t = t0;
     step_count accepted = 0;
     for (step_count n = 0; n < max_attempts && next < count; ++n) {
         bool ok = false;
-        s = engine.attempt(f, t, y, t1, ok, dense);
-        if (s != status::ok) return {s, t, accepted};
+        s = engine.attempt(counted, t, y, t1, ok, dense);
+        if (s != status::ok) return done(s, t, accepted);
         if (!ok) continue;
         ++accepted;
         // Every time inside the step: interpolated; a time on its end: the step's own state.
         const auto inside = [&](T ti) { return forward ? ti < t : ti > t; };
         if (next < count && inside(times[next])) {
-            s = complete();
-            if (s != status::ok) return {s, t, accepted};
+            s = complete(counted);
+            if (s != status::ok) return done(s, t, accepted);
             for (; next < count && inside(times[next]); ++next) {
                 dense.at(times[next], u);
                 // The interpolant of a finite step can still overflow between its ends (huge states).
-                if (!detail::all_finite(u)) return {status::non_finite, t, accepted};
+                if (!detail::all_finite(u)) return done(status::non_finite, t, accepted);
                 observe(times[next], static_cast<const State&>(u));
             }
         }
         while (next < count && times[next] == t) observe(times[next++], static_cast<const State&>(y));
     }
-    if (next < count) return {status::substep_limit, t, accepted};
-    return {status::ok, t, accepted};
+    if (next < count) return done(status::substep_limit, t, accepted);
+    return done(status::ok, t, accepted);
 }
 }  // namespace detail
 
@@ -172,7 +186,7 @@ template <class Method, class State, class System, class Times, class Observer>
                                                                     step_count max_attempts = default_max_attempts) {
     dense_step<Method, State> dense;
     return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense,
-                               [&] { return dense.complete(f, engine); });
+                               [&](auto& counted) { return dense.complete(counted, engine); });
 }
 
 }  // namespace odestep

@@ -138,25 +138,31 @@ template <class Method, class State, std::size_t Capacity, class System>
                                                                        step_count max_attempts = default_max_attempts) {
     using T = value_type_t<State>;
     status s = detail::preflight(engine, t0, t1, max_attempts);
-    if (s != status::ok) return {s, t0, 0};
+    if (s != status::ok) return {s, t0, 0, {}};
     sol.start(t0, y);
-    if (t0 == t1 && !detail::all_finite(y)) return {status::non_finite, t0, 0};  // an empty run, as integrate()
+    if (t0 == t1 && !detail::all_finite(y)) return {status::non_finite, t0, 0, {}};  // an empty run, as integrate()
+    const counts before = detail::engine_counts(engine);
+    detail::evaluation_tally tally;
+    auto counted = detail::counting(f, tally);
+    const auto done = [&](status code, T t_end, step_count steps) {
+        return integrate_result<T>{code, t_end, steps, detail::engine_work(engine, before, tally)};
+    };
     dense_step<Method, State> dense;
     T t = t0;
     step_count accepted = 0;
     for (step_count n = 0; n < max_attempts && t != t1; ++n) {
-        if (sol.full()) return {status::storage_full, t, accepted};
+        if (sol.full()) return done(status::storage_full, t, accepted);
         bool ok = false;
-        s = engine.attempt(f, t, y, t1, ok, dense);
-        if (s != status::ok) return {s, t, accepted};
+        s = engine.attempt(counted, t, y, t1, ok, dense);
+        if (s != status::ok) return done(s, t, accepted);
         if (!ok) continue;
         ++accepted;
-        s = dense.complete(f, engine);
-        if (s != status::ok) return {s, t, accepted};
+        s = dense.complete(counted, engine);
+        if (s != status::ok) return done(s, t, accepted);
         sol.push(dense.piece(), t, y);
     }
-    if (t != t1) return {status::substep_limit, t, accepted};
-    return {status::ok, t, accepted};
+    if (t != t1) return done(status::substep_limit, t, accepted);
+    return done(status::ok, t, accepted);
 }
 
 /// \brief integrate_times with the output times given one at a time: `advance_to(f, t_out, y_out)` runs the

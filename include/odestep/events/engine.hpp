@@ -110,6 +110,17 @@ public:
     // Kept by rearm (which reads the probes: a change of set.limits.probes takes effect at the next rearm)
     // and fire_all; read by the quiet step's test.
     bool all_armed = false;
+    // The work done off the quiet path, counted where it is done (the loops derive the quiet step's: one step
+    // call and E evaluations of g): step calls that failed in advance, re-step calls (location, probes, the
+    // rest of a step after an action), evaluations of f made directly (Hermite slopes, headings), and
+    // evaluations of g (the start's, and every one off the quiet path).
+    struct rest_work {
+        step_count failed_steps = 0;
+        step_count steps = 0;
+        step_count rhs = 0;
+        step_count g = 0;
+    };
+    rest_work work{};
 
     // Checks the settings and evaluates every g at the start. An event whose g is zero there is not armed.
     template <class Ptrs>
@@ -146,7 +157,10 @@ public:
     step_outcome<T> advance(Stepper& stepper, System& f, set_type& set, refs y, T t_s, T h, T t_end, Sink sink) {
         pack start;
         const status s = step(stepper, f, y, t_s, h, start);
-        if (ODESTEP_UNLIKELY(s != status::ok)) return {s, t_s, 0, no_event};
+        if (ODESTEP_UNLIKELY(s != status::ok)) {
+            ++work.failed_steps;
+            return {s, t_s, 0, no_event};
+        }
         values g;
         if (ODESTEP_UNLIKELY(!settle(set, y, t_end, g)))
             return advance_rest(stepper, f, set, y, start, g, t_s, h, t_end, sink);
@@ -237,8 +251,10 @@ private:
             if (partial) {
                 load(y, start);
                 s = call_step(stepper, f, y, t_s, h, seq{});
+                ++work.steps;
                 if (s != status::ok) return outcome(s, t_s, no_event);
                 evaluate(set, t_end, y, g_end);
+                work.g += E;
             }
             if (!finite_values(g_end)) return fail(start, t_s, status::non_finite_event);
             // Nothing crossed and no probes: remember the values and go on.
@@ -485,8 +501,9 @@ private:
 
     // g_i(t, y) for every event; false if one is NaN or Inf.
     template <class Ptrs>
-    static bool evaluate_all(set_type& set, T t, const Ptrs& y, values& g) {
+    bool evaluate_all(set_type& set, T t, const Ptrs& y, values& g) {
         evaluate(set, t, y, g);
+        work.g += E;
         return finite_values(g);
     }
 
@@ -499,8 +516,9 @@ private:
     }
 
     // g of event i at (t, y).
-    static T evaluate_one(set_type& set, std::size_t i, T t, const refs& y) {
+    T evaluate_one(set_type& set, std::size_t i, T t, const refs& y) {
         T value = T(0);
+        work.g += 1;
         visit(set, i, [&](auto& e) { value = call_g<State>(e.g, t, y, seq{}); });
         return value;
     }
@@ -560,6 +578,7 @@ private:
     template <class System>
     ODESTEP_EVENTS_NOINLINE bool headings(System& f, set_type& set, T t_star, T t_b, T h, const pack& y, values& g) {
         pack slope;
+        work.rhs += 1;
         if constexpr (K == 1) {
             odestep::detail::evaluate(f, t_star, y[0], slope[0]);
         } else {
@@ -573,6 +592,7 @@ private:
             for (std::size_t n = 0; n < y[k].size(); ++n) ahead[k][n] = y[k][n] + d * slope[k][n];
         values g_ahead;
         evaluate(set, t_star + d, pointers(ahead), g_ahead);
+        work.g += E;
         for (std::size_t i = 0; i < E; ++i) {
             const T change = g_ahead[i] - g[i];
             if (!is_finite(change) || change == T(0)) continue;
@@ -590,8 +610,8 @@ private:
     // interpolant (Hermite from start, y_end and the slopes d, which the first call of a pass computes: f at
     // both ends; NaN or Inf there is non_finite, and the caller rolls back to the pass's start).
     template <class Stepper, class System>
-    ODESTEP_INLINE static status state_at(Stepper& trial, System& f, const pack& start, const refs& y_end, slopes& d,
-                                          T t_s, T s, T h, T t_end, pack& out) {
+    ODESTEP_INLINE status state_at(Stepper& trial, System& f, const pack& start, const refs& y_end, slopes& d, T t_s,
+                                   T s, T h, T t_end, pack& out) {
         if constexpr (interpolates) {
             (void)trial;
             if (ODESTEP_UNLIKELY(!d.ready)) {
@@ -608,9 +628,10 @@ private:
     }
     // The stepper's own state s after (t_s, start): trial, a copy of the stepper, reset, steps s.
     template <class Stepper, class System>
-    ODESTEP_INLINE static status restep(Stepper& trial, System& f, const pack& start, T t_s, T s, pack& out) {
+    ODESTEP_INLINE status restep(Stepper& trial, System& f, const pack& start, T t_s, T s, pack& out) {
         out = start;
         reset_if_any(trial);
+        ++work.steps;
         return call_step(trial, f, pointers(out), t_s, s, seq{});
     }
     // The Hermite interpolant at s into the pass of h (the slopes d ready).
@@ -626,8 +647,9 @@ private:
     // The slopes at the pass's ends: f(t, y) (Newtonian: x' = v and v' = a(t, x, v)), two evaluations. Kept
     // out of line: the rare path of the rare path.
     template <class System>
-    ODESTEP_EVENTS_NOINLINE static status hermite_ends(System& f, const pack& start, const refs& y_end, T t_s, T t_end,
-                                                       slopes& d) {
+    ODESTEP_EVENTS_NOINLINE status hermite_ends(System& f, const pack& start, const refs& y_end, T t_s, T t_end,
+                                                slopes& d) {
+        work.rhs += 2;
         if constexpr (K == 1) {
             odestep::detail::evaluate(f, t_s, start[0], d.d0[0]);
             odestep::detail::evaluate(f, t_end, static_cast<const State&>(*y_end[0]), d.d1[0]);

@@ -10,6 +10,7 @@
 #include <tuple>
 #include <type_traits>
 
+#include "../counts.hpp"
 #include "../detail/grid_clock.hpp"
 #include "../roots/bracket.hpp"
 #include "../state.hpp"
@@ -203,6 +204,7 @@ struct event_integrate_result {
     std::size_t event;                   ///< the terminal event, or no_event
     std::size_t fired;                   ///< firings in total
     std::array<std::size_t, E> firings;  ///< firings per event
+    odestep::counts counts{};            ///< evaluations (of f and g), steps and firings of the call
 };
 
 /// What one tick of an event_stepper reports: the status (ok, stopped_by_event, event_limit, or an error),

@@ -15,6 +15,7 @@
 #include "../adaptive/dense.hpp"
 #include "../adaptive/integrate_adaptive.hpp"
 #include "../detail/ops.hpp"
+#include "../detail/preflight.hpp"
 #include "../integrate.hpp"
 #include "../state.hpp"
 #include "../status.hpp"
@@ -383,9 +384,7 @@ struct times_output {
 // replayed step's cost).
 template <class Engine, class Set, class T>
 status check_free_running(const Engine& engine, const Set& set, T t0, T t1, step_count max_attempts) {
-    status s = engine.settings_status();
-    if (s == status::ok && max_attempts == 0) s = status::invalid_setting;
-    if (s == status::ok) s = check_span(t0, t1);
+    status s = preflight(engine, t0, t1, max_attempts);
     if (s == status::ok) s = limits_status<replay_cost<T>, typename Set::finder, T>(Set::size, set.limits);
     return s;
 }

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <type_traits>
 
+#include "../counts.hpp"
 #include "../detail/grid_clock.hpp"
 #include "../detail/preflight.hpp"
 #include "../integrate.hpp"
@@ -28,12 +29,26 @@ event_integrate_result<T, Set::size> drive_events_on(Stepper& stepper, System& f
     constexpr std::size_t K = 1 + sizeof...(More);
     using engine_type = event_engine<State, K, Set>;
     engine_type engine;
+    using S = std::remove_cv_t<std::remove_reference_t<Stepper>>;
+    evaluation_tally tally;
+    // Calls of advance: the completed steps and the one that ended the run early (none for an empty run).
+    step_count advances = 0;
     const auto finish = [&](status s, T t, step_count steps, std::size_t event) {
-        event_integrate_result<T, Set::size> r{s, t, steps, event, 0, {}};
+        event_integrate_result<T, Set::size> r{s, t, steps, event, 0, {}, {}};
         for (std::size_t i = 0; i < Set::size; ++i) {
             r.firings[i] = engine.memory[i].fired;
             r.fired += engine.memory[i].fired;
         }
+        // The quiet part of each advance is derived: one step call, and E evaluations of g unless that call
+        // failed; the engine counted the rest where it did it.
+        const step_count calls = advances + engine.work.steps;
+        counts& c = r.counts;
+        add_implicit_work<S>(c, calls, tally, has_jacobian_v<std::remove_cv_t<System>, State>);
+        c.rhs_evals =
+            exact_rhs_evals_v<S> ? calls * static_cast<step_count>(S::rhs_evals_per_step) + engine.work.rhs : tally.rhs;
+        c.event_evals = (advances - engine.work.failed_steps) * Set::size + engine.work.g;
+        c.accepted_steps = steps;
+        c.firings = r.fired;
         return r;
     };
     planned = preflight(stepper, planned, plan);
@@ -44,9 +59,18 @@ event_integrate_result<T, Set::size> drive_events_on(Stepper& stepper, System& f
     const status started = engine.begin(set, plan.clock.t0, y);
     if (started != status::ok) return finish(started, plan.clock.t0, 0, no_event);
     no_sink sink;
-    const run_outcome<T> r = run_grid(
-        plan, [&](T t, T h, T next) { return engine.advance(stepper, f, set, y, t, h, next, sink); }, observe, y0,
-        ys...);
+    run_outcome<T> r;
+    if constexpr (exact_rhs_evals_v<S>) {  // f uncounted: derived from the step calls
+        r = run_grid(
+            plan, [&](T t, T h, T next) { return engine.advance(stepper, f, set, y, t, h, next, sink); }, observe, y0,
+            ys...);
+    } else {
+        auto counted = counting(f, tally);
+        r = run_grid(
+            plan, [&](T t, T h, T next) { return engine.advance(stepper, counted, set, y, t, h, next, sink); }, observe,
+            y0, ys...);
+    }
+    advances = r.steps + (r.code != status::ok && plan.steps != 0 ? 1 : 0);
     return finish(r.code, r.t, r.steps, r.event);
 }
 

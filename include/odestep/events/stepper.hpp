@@ -10,6 +10,7 @@
 #include <limits>
 #include <tuple>
 
+#include "../counts.hpp"
 #include "../detail/grid_clock.hpp"
 #include "../detail/ops.hpp"
 #include "../detail/preflight.hpp"
@@ -76,8 +77,17 @@ public:
         const status limited = limits_ok();
         if (limited != status::ok) return limited;
         const std::array<const state_type*, arity> ptrs{&y...};
+        const auto work_before = engine_.work;
         const status s = engine_.begin(set_, t0, ptrs);
-        if (s != status::ok) return s;
+        if (s != status::ok) {
+            engine_.work = work_before;  // (begin evaluated g: the counts stay those of the last start)
+            return s;
+        }
+        // The counts start afresh, with the start's evaluations of g.
+        engine_.work = {};
+        engine_.work.g = Set::size;
+        work_ = {};
+        tally_ = {};
         detail::reset_if_any(stepper_);
         clock_ = clock;
         n_ = 0;
@@ -116,25 +126,31 @@ public:
     template <class System, class... States>
     [[nodiscard]] ODESTEP_INLINE tick_result<value_type, Capacity> tick(System&& f, States&... y) {
         static_assert(sizeof...(States) == arity, "odestep: tick(f, y) (Newtonian: tick(a, x, v))");
-        const std::array<state_type*, arity> ptrs{&y...};
-        if (ODESTEP_UNLIKELY(clock_state_ != clock_state::on_grid)) return catch_up(f, ptrs);
-        tick_result<T, Capacity> r;  // firings past `fired` stay unwritten: clearing them cost most of a quiet tick
-        r.status = status::ok;
-        r.t = t_now_;
-        r.fired = 0;
-        r.event = no_event;
-        // The time of the state (t_now_) is the last tick's end; the tick's end is converted from the counter
-        // after the step (on the grid nothing is kept across the step's call).
-        typename engine_type::pack start;
-        r.status = engine_type::step(stepper_, f, ptrs, t_now_, clock_.dt, start);
-        if (ODESTEP_UNLIKELY(r.status != status::ok)) return r;  // y untouched, at t_now_
-        const T t_end = grid_time();  // finite: an unbounded clock never takes this path (see start)
-        typename engine_type::values g;
-        if (ODESTEP_UNLIKELY(!engine_.settle(set_, ptrs, t_end, g))) return rest(f, ptrs, start, g, t_end);
-        ++n_;
-        t_now_ = t_end;
-        r.t = t_end;
-        return r;
+        if constexpr (detail::exact_rhs_evals_v<Stepper>) {
+            return tick_on(f, y...);  // f's evaluations derived from the step calls (see counts())
+        } else {
+            auto counted = detail::counting(f, tally_);
+            return tick_on(counted, y...);
+        }
+    }
+
+    /// What the loop did since start (odestep::counts): evaluations of f and of every g (the start's too),
+    /// the Jacobians and factorizations of an implicit stepper, the grid times reached (accepted_steps, as
+    /// reached()) and the firings. Kept as the loop goes, off the quiet tick's path: a quiet tick counts
+    /// nothing (its work is derived), so a caller who wants one tick's counts subtracts two readings.
+    odestep::counts counts() const noexcept {
+        const auto& w = engine_.work;
+        const std::uint64_t quiet = n_ - work_.off_reached;  // quiet ticks that reached their grid time
+        const std::uint64_t calls = quiet + work_.quiet_failed + work_.rested + work_.off_steps + w.steps;
+        odestep::counts c;
+        using S = std::remove_cv_t<Stepper>;
+        detail::add_implicit_work<S>(c, calls, tally_, tally_.jacobian != 0);
+        c.rhs_evals = detail::exact_rhs_evals_v<S> ? calls * static_cast<std::uint64_t>(S::rhs_evals_per_step) + w.rhs
+                                                   : tally_.rhs;
+        c.event_evals = (quiet + work_.rested + work_.off_settles) * Set::size + w.g;
+        c.accepted_steps = n_;
+        for (std::size_t i = 0; i < Set::size; ++i) c.firings += engine_.memory[i].fired;
+        return c;
     }
 
     /// The time of the state: t0 + reached() dt, or the time a tick stopped at.
@@ -148,14 +164,44 @@ public:
     constexpr std::size_t firings(std::size_t i) const noexcept { return engine_.memory[i].fired; }
     /// The stepper, as the loop keeps it.
     Stepper& stepper() noexcept { return stepper_; }
+    /// The stepper, read only.
+    const Stepper& stepper() const noexcept { return stepper_; }
     /// The events and their limits (changed limits are checked by the next rearm, and a change of the probes
     /// takes effect there).
     Set& events() noexcept { return set_; }
+    /// The events, read only.
+    const Set& events() const noexcept { return set_; }
 
 private:
     using T = value_type;
     using engine_type = detail::event_engine<state_type, arity, Set>;
     using ptrs_type = std::array<state_type*, arity>;
+
+    template <class System, class... States>
+    [[nodiscard]] ODESTEP_INLINE tick_result<value_type, Capacity> tick_on(System& f, States&... y) {
+        const std::array<state_type*, arity> ptrs{&y...};
+        if (ODESTEP_UNLIKELY(clock_state_ != clock_state::on_grid)) return catch_up(f, ptrs);
+        tick_result<T, Capacity> r;  // firings past `fired` stay unwritten: clearing them cost most of a quiet tick
+        r.status = status::ok;
+        r.t = t_now_;
+        r.fired = 0;
+        r.event = no_event;
+        // The time of the state (t_now_) is the last tick's end; the tick's end is converted from the counter
+        // after the step (on the grid nothing is kept across the step's call).
+        typename engine_type::pack start;
+        r.status = engine_type::step(stepper_, f, ptrs, t_now_, clock_.dt, start);
+        if (ODESTEP_UNLIKELY(r.status != status::ok)) {
+            ++work_.quiet_failed;
+            return r;  // y untouched, at t_now_
+        }
+        const T t_end = grid_time();  // finite: an unbounded clock never takes this path (see start)
+        typename engine_type::values g;
+        if (ODESTEP_UNLIKELY(!engine_.settle(set_, ptrs, t_end, g))) return rest(f, ptrs, start, g, t_end);
+        ++n_;
+        t_now_ = t_end;
+        r.t = t_end;
+        return r;
+    }
 
     // The end of the step being taken, t0 + (n+1) dt, from the counter.
     value_type grid_time() const noexcept { return clock_.time(n_ + 1); }
@@ -174,6 +220,7 @@ private:
     ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> rest(System& f, const ptrs_type ptrs,
                                                           typename engine_type::pack& start,
                                                           const typename engine_type::values g, T t_end) {
+        ++work_.rested;
         tick_result<T, Capacity> r;
         r.status = status::ok;
         r.t = t_now_;
@@ -210,19 +257,23 @@ private:
             const T h = off_grid_ ? t_end - t_now_ : clock_.dt;
             if (h == T(0)) {  // an earlier tick stopped on this grid time
                 ++n_;
+                ++work_.off_reached;
                 off_grid_ = false;
                 continue;
             }
             const bool partial = off_grid_;
             typename engine_type::pack start;
             const status s = engine_type::step(stepper_, f, ptrs, t_now_, h, start);
+            ++work_.off_steps;
             if (s != status::ok) {
                 r.status = s;
                 break;
             }
             typename engine_type::values g;
+            ++work_.off_settles;
             if (engine_.settle(set_, ptrs, t_end, g)) {
                 ++n_;
+                ++work_.off_reached;
                 t_now_ = t_end;
                 off_grid_ = false;
             } else {
@@ -254,6 +305,7 @@ private:
         t_now_ = a.t;
         if (a.code == status::ok) {
             ++n_;
+            ++work_.off_reached;
             off_grid_ = false;
         } else if (!(a.t == t_start)) {
             off_grid_ = true;
@@ -282,6 +334,18 @@ private:
     clock_state clock_state_ = clock_state::idle;
     bool off_grid_ = false;         // the state is between t0 + n dt and t0 + (n+1) dt
     bool unbounded_clock_ = false;  // some grid time the counter can reach is not finite: every tick in catch_up
+    // The work since start off the quiet tick's path, counted where it is done (counts() derives the quiet
+    // ticks' work from n_): quiet ticks whose step failed, quiet ticks that went on in rest, catch_up's step
+    // calls and settles, and the grid times reached off the quiet path.
+    struct tick_work {
+        std::uint64_t quiet_failed = 0;
+        std::uint64_t rested = 0;
+        std::uint64_t off_steps = 0;
+        std::uint64_t off_settles = 0;
+        std::uint64_t off_reached = 0;
+    };
+    tick_work work_{};
+    detail::evaluation_tally tally_{};  // f and J, counted call by call for a stepper without exact_rhs_evals
 };
 
 /// make_event_stepper(stepper, watch(...)) with the default capacity; make_event_stepper<16>(...) lists up

@@ -96,6 +96,9 @@ public:
     static constexpr std::size_t stages = S;  ///< the table's stages
     /// Right-hand-side evaluations of `step(f, y, t, dt)`, the most it ever makes.
     static constexpr std::size_t rhs_evals_per_step = count(plain_stages);
+    /// Every step evaluates all its stages (the finiteness test comes after them): the loops count a run's
+    /// evaluations as steps x rhs_evals_per_step.
+    static constexpr bool exact_rhs_evals = true;
     /// Right-hand-side evaluations of the step that also returns the error estimate (0 without one).
     static constexpr std::size_t rhs_evals_per_error_step = E > 0 ? count(error_stages) : 0;
     static constexpr bool error_estimate = E > 0;      ///< the table has an embedded method

@@ -110,7 +110,7 @@ template <class State, class System, class Times, class Observer>
                                                                     Observer&& observe,
                                                                     step_count max_attempts = default_max_attempts) {
     radau5_dense<State> dense;
-    return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense, [] { return status::ok; });
+    return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense, [](auto&) { return status::ok; });
 }
 
 /// integrate_times with a Rosenbrock pair (odestep::rosenbrock_adaptive): the same contract as with the Radau IIA 5
@@ -124,7 +124,7 @@ template <class Method, class State, class System, class Times, class Observer>
                                                                     step_count max_attempts = default_max_attempts) {
     rosenbrock_dense<State> dense;
     return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense,
-                               [&] { return dense.complete(f); });
+                               [&](auto& counted) { return dense.complete(counted); });
 }
 
 /// integrate_times with an SDIRK pair (odestep::sdirk_adaptive): the same contract as with the Radau IIA 5
@@ -136,7 +136,7 @@ template <class Method, class State, class System, class Times, class Observer>
                                                                     const Times& times, Observer&& observe,
                                                                     step_count max_attempts = default_max_attempts) {
     sdirk_dense<State> dense;
-    return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense, [] { return status::ok; });
+    return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense, [](auto&) { return status::ok; });
 }
 
 }  // namespace odestep

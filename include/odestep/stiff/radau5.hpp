@@ -215,6 +215,8 @@ public:
     step_count jacobian_evaluations() const noexcept { return jacobians_; }
     /// Decompositions since construction, each one real (E1) and one complex (E2) LU factorization.
     step_count decompositions() const noexcept { return decompositions_; }
+    /// LU factorizations since construction: two per decomposition (odestep::counts, as SciPy's nlu).
+    step_count factorizations() const noexcept { return 2 * decompositions_; }
     /// Newton iterations since construction (each: 3 evaluations of f, one real and one complex solve).
     step_count newton_iterations() const noexcept { return iterations_; }
 

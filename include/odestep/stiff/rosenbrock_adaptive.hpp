@@ -160,6 +160,10 @@ public:
     step_count accepted_steps() const noexcept { return accepted_; }
     /// Rejected attempts since construction.
     step_count rejected_steps() const noexcept { return rejected_; }
+    /// Jacobians formed since construction (the system's own or by differences): one per step tried.
+    step_count jacobian_evaluations() const noexcept { return tried_; }
+    /// LU factorizations since construction: one per step tried.
+    step_count factorizations() const noexcept { return tried_; }
 
     /// One attempted step from (t, y) toward t_end, never past it, landing exactly on t_end when the step
     /// reaches it (or within 1% of it, if that stays within max_step). Accepted: y and t advance. Rejected:
@@ -193,6 +197,7 @@ public:
             return status::step_too_small;
         State y_new = y;
         State err{};
+        ++tried_;
         const status s = stepper_type{}.step(f, y_new, t, h, err);
         const T habs = detail::abs_value(h);
         if (s != status::ok) {
@@ -239,6 +244,7 @@ private:
     std::size_t failures_ = 0;
     step_count accepted_ = 0;
     step_count rejected_ = 0;
+    step_count tried_ = 0;
 };
 
 }  // namespace odestep
