@@ -219,4 +219,52 @@ TEST_CASE("rodas4_substeps: NaN from f and the attempt cap leave y bit for bit")
     CHECK(odestep::detail::same_values(w, before));
 }
 
+TEST_CASE("rodas4: Robertson's y2 loses order in the stiff range, and the estimate says so truthfully") {
+    // docs/stiff.md, "Work-precision": why Rodas4 needs many steps on Robertson when atol is tight on y2. From a
+    // state on the solution at t = 2 (stiff eigenvalue -2.2e3), one step of h and its estimate u6; the reference
+    // for the true local error is 2000 Rodas4 steps of h / 2000 in long double (4000 change y2's local errors by
+    // less than 1e-3 of them).
+    using L = long double;
+    using SL = state3<L>;
+    const auto sys = odestep::with_jacobian(odestep_test::robertson{}, odestep_test::robertson_jacobian{});
+    odestep::rosenbrock_adaptive<odestep::tables::rodas4, S3> engine(odestep::tolerances<S3>::uniform(1e-8, 1e-14));
+    S3 at2{1, 0, 0};
+    REQUIRE(odestep::integrate_adaptive(engine, sys, at2, 0.0, 2.0).status == odestep::status::ok);
+    const SL y0{static_cast<L>(at2[0]), static_cast<L>(at2[1]), static_cast<L>(at2[2])};
+    const odestep::rosenbrock<odestep::tables::rodas4, SL> rodas4;
+    const odestep::rosenbrock<odestep::tables::rodas4, S3> rodas4_double;
+    const std::array<L, 2> hs{L(0.0256), L(0.1024)};
+    std::array<SL, 2> estimate{};
+    std::array<SL, 2> local_error{};
+    for (std::size_t k = 0; k < 2; ++k) {
+        SL y = y0;
+        REQUIRE(rodas4.step(sys, y, L(2), hs[k], estimate[k]) == odestep::status::ok);
+        SL reference = y0;
+        bool all_ok = true;
+        for (int n = 0; n < 2000; ++n)
+            all_ok =
+                all_ok && rodas4.step(sys, reference, L(2) + hs[k] * n / 2000, hs[k] / 2000) == odestep::status::ok;
+        REQUIRE(all_ok);
+        for (std::size_t i = 0; i < 3; ++i) local_error[k][i] = y[i] - reference[i];
+        // Not round-off: the same step in double gives y2's estimate within 1e-3 of the long double one (3e-9).
+        S3 yd = at2;
+        S3 ed{};
+        REQUIRE(rodas4_double.step(sys, yd, 2.0, static_cast<double>(hs[k]), ed) == odestep::status::ok);
+        CHECK(std::fabs(ed[1] / static_cast<double>(estimate[k][1]) - 1) < 1e-3);
+    }
+    // Observed orders over h -> 4 h (log base 4 of the growth): y2's estimate and true local error about 1
+    // (1.0 and 1.1 measured), y1's estimate 4 (the embedded order 3 + 1).
+    const auto order = [](L small, L large) {
+        return static_cast<double>(std::log(std::fabs(large / small)) / std::log(L(4)));
+    };
+    const double y2_estimate = order(estimate[0][1], estimate[1][1]);
+    const double y2_local = order(local_error[0][1], local_error[1][1]);
+    const double y1_estimate = order(estimate[0][0], estimate[1][0]);
+    MESSAGE("observed orders: y2 estimate " << y2_estimate << ", y2 local error " << y2_local << ", y1 estimate "
+                                            << y1_estimate);
+    CHECK(y2_estimate < 2);
+    CHECK(y2_local < 2);
+    CHECK(y1_estimate > 3.5);
+}
+
 }  // namespace
