@@ -64,6 +64,12 @@ for opt in "${opts[@]}"; do
     -semihosting-config enable=on,target=native -kernel "$elf" > "$out/m0$opt.txt" 2>&1
   status=$?
   grep '^COUNT' "$out/m0$opt.txt"
+  # The clock's check: a loop of 201 instructions must read 201 (62.5 instructions per SysTick tick).
+  if ! awk '$1 == "COUNT" && $2 == "calibration" { found = 1; bad = $3 < 200.9 || $3 > 201.1 }
+            END { exit !(found && !bad) }' "$out/m0$opt.txt"; then
+    echo "test-m0: the clock's calibration at $opt is not 201 instructions" >&2
+    failed=1
+  fi
   if ((status != 0)) || ! grep -qx 'END 0' "$out/m0$opt.txt"; then
     echo "test-m0: the M0 run at $opt failed (exit $status):" >&2
     cat "$out/m0$opt.txt" >&2
