@@ -25,6 +25,8 @@
 // microbit's SysTick, on the processor clock (16 MHz), ticks every 62.5 instructions. Each case's loop is
 // timed, the same loop around an empty step subtracted: (ticks - empty ticks) * 62.5 / steps, to within
 // 62.5 / steps per step either way. A loop of known length checks the clock (COUNT calibration).
+// The same source runs on the Cortex-M4F (QEMU mps2-an386, whose SysTick runs at 25 MHz: compiled with
+// -DRUNNER_TENTHS_PER_TICK=400), for figures beside the M0's from the same harness.
 #include <odestep/odestep.h>
 
 #include <odestep/odestep.hpp>
@@ -131,13 +133,18 @@ M4F_STEP int step_calibration(void*, float, float) {
 }
 #endif
 
-// Warm-up, the timed steps, and the COUNT line (tenths of an instruction: ticks * 62.5 = ticks * 625 / 10).
+// Instructions per SysTick tick, in tenths: 62.5 on the microbit (16 MHz).
+#ifndef RUNNER_TENTHS_PER_TICK
+#define RUNNER_TENTHS_PER_TICK 625u
+#endif
+
+// Warm-up, the timed steps, and the COUNT line (in tenths of an instruction: ticks * RUNNER_TENTHS_PER_TICK).
 void measure(const char* name, step_fn f, void* context) {
     run(f, context, 0, warmup);
     const std::uint32_t ticks = run(f, context, warmup, steps);
 #if M0_TARGET
     const std::uint32_t net = ticks > empty_ticks ? ticks - empty_ticks : 0u;
-    const std::uint32_t tenths = (net * 625u + steps / 2u) / steps;
+    const std::uint32_t tenths = (net * RUNNER_TENTHS_PER_TICK + steps / 2u) / steps;
     put("COUNT ");
     put(name);
     put(" ");
