@@ -84,6 +84,8 @@ else
   # The same portable tests cross-compiled and run on emulated Cortex-M3/M4F/M7/M33/M55 (M0+ built only),
   # then the firmware audit: no heap, no double arithmetic in float builds, flash and stack per stepper.
   run cortex-m scripts/test-targets.sh
+  # A small runner on the Cortex-M0 (QEMU microbit), its float results bit for bit the host's (tests/m0/).
+  run cortex-m0 scripts/test-m0.sh
   run audit scripts/audit.sh
   # Instruction counts are deterministic: RK4 on Lorenz must stay within 1.05x a hand-written loop at -O2.
   run bench-quick scripts/bench.sh --quick
