@@ -464,6 +464,30 @@ TEST_CASE("events: the per-tick event stepper advances exactly one dt and lists 
     CHECK(loop.firings(0) == 3);
 }
 
+TEST_CASE("events: a tick event left unarmed by its dead time is armed again by the quiet ticks after it") {
+    // y' = 1 from 0, reset to 0 when it reaches 1: the crossings are at t = 1, 2, 3 (closed form, RK4 exact).
+    // With a dead time of 0.5 the event is not armed for the ticks to 1.2 and 1.5 after each firing; the
+    // quiet ticks that follow must arm it again, or the crossings at 2 and 3 are missed.
+    auto top = [](double, const state1& y) { return y[0] - 1.0; };
+    auto reset = [](double, state1& y) { y[0] = 0.0; };
+    auto loop = odestep::make_event_stepper(
+        odestep::rk4<state1>{},
+        odestep::watch(odestep::make_event<state1>(top, odestep::direction::rising, reset).with_dead_time(0.5)));
+    state1 y{0.0};
+    REQUIRE(loop.start(0.0, 0.3, y) == odestep::status::ok);
+    std::size_t fired = 0;
+    for (std::size_t n = 0; n < 11; ++n) {
+        const auto r = loop.tick(clock_rhs{}, y);
+        REQUIRE(r.status == odestep::status::ok);
+        if (r.fired) {
+            ++fired;
+            CHECK(std::abs(r.firings[0].t - static_cast<double>(fired)) <= 64 * eps * 3.0);
+        }
+    }
+    CHECK(fired == 3);
+    CHECK(loop.firings(0) == 3);
+}
+
 TEST_CASE("events: after a terminal tick the next tick goes from the event back to the grid and on to its own") {
     auto half = [](double, const state1& y) { return y[0] - 0.5; };
     auto loop = odestep::make_event_stepper(
@@ -489,6 +513,33 @@ TEST_CASE("events: after a terminal tick the next tick goes from the event back 
     state1 z{0.25};
     CHECK(fresh.tick(clock_rhs{}, z).status == odestep::status::invalid_time);
     CHECK(z[0] == 0.25);
+}
+
+TEST_CASE("events: start after a tick that stopped inside its period begins a fresh clock, as a new loop's") {
+    // A loop stopped off the grid (at y = 0.5, t = 0.5) and started again at t0 = 0.1 with dt = 0.2: its first
+    // tick is one step of exactly dt, bit for bit a new loop's (a step back to the grid would be
+    // (0.1 + 0.2) - 0.1 = 0.20000000000000004 long), and ends on t0 + dt.
+    auto half = [](double, const state1& y) { return y[0] - 0.5; };
+    const auto ev = odestep::make_event<state1>(half, odestep::direction::rising);
+    auto loop = odestep::make_event_stepper(odestep::rk4<state1>{}, odestep::watch(ev));
+    state1 y{0.0};
+    REQUIRE(loop.start(0.0, 0.3, y) == odestep::status::ok);
+    REQUIRE(loop.tick(clock_rhs{}, y).status == odestep::status::ok);
+    REQUIRE(loop.tick(clock_rhs{}, y).status == odestep::status::stopped_by_event);
+    y = state1{0.0};
+    REQUIRE(loop.start(0.1, 0.2, y) == odestep::status::ok);
+    const auto r = loop.tick(clock_rhs{}, y);
+    auto twin = odestep::make_event_stepper(odestep::rk4<state1>{}, odestep::watch(ev));
+    state1 z{0.0};
+    REQUIRE(twin.start(0.1, 0.2, z) == odestep::status::ok);
+    const auto rz = twin.tick(clock_rhs{}, z);
+    CHECK(r.status == odestep::status::ok);
+    CHECK(rz.status == odestep::status::ok);
+    CHECK(r.t == 0.1 + 0.2);
+    CHECK(rz.t == r.t);
+    CHECK(std::memcmp(y.data(), z.data(), sizeof y) == 0);
+    CHECK(loop.ticks() == 1);
+    CHECK(loop.reached() == 1);
 }
 
 TEST_CASE("events: rearm measures crossings from the caller's new state and keeps max_firings and the dead time") {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // odestep: the event engine, one step with events as named phases: the quiet step (step and settle), and, when
 // settle cannot prove the step quiet, the scan (advance_rest): passes over the step piece by piece (probe), each
-// crossing located (location.hpp), its events fired in rounds (fire_round, fire_all), and the step's result
+// crossing located (location.hpp), its events fired in rounds (fire_rounds, fire_all), and the step's result
 // committed to the events' memory (commit) or, after an action, the rest of the step taken again from the event
 // (restart).
 #ifndef ODESTEP_EVENTS_ENGINE_HPP
@@ -158,6 +158,16 @@ public:
         return true;
     }
 
+    // settle when the caller knows every event armed and no probes (all_armed): the quiet test is then one
+    // product per event, and nothing needs arming after it. The caller keeps all_armed in view (event_stepper
+    // takes this path only while it holds).
+    ODESTEP_INLINE bool settle_armed(set_type& set, const refs& y, T t_end, values& g) {
+        evaluate(set, t_end, y, g);
+        if (ODESTEP_UNLIKELY(!same_sides(g, events_seq{}))) return false;
+        remember(set, g);
+        return true;
+    }
+
     // The rest of advance, after settle returned false (start and g as step and settle left them): every
     // crossing inside the step located, fired and acted on; after a callable action, the rest of the step
     // again from the event. Any outcome but ok leaves y somewhere other than the regular step's end: the
@@ -203,7 +213,10 @@ private:
         std::size_t located = 0;  // locations in this step, firing or not: at most max_firings_per_step
         bool partial = false;     // the pass began at an event
         bool acted = false;       // a callable action ran in this step
-        step_outcome<T> result{status::ok, T(0), 0, no_event};  // the step's outcome, once a phase ends it
+        // The step's outcome, once a phase ends it (with fired_here and acted).
+        status code = status::ok;
+        T t_out = T(0);
+        std::size_t event = no_event;
         pack lo_state;
         pack hi_state;
         pack a_state;
@@ -212,15 +225,16 @@ private:
 
         T at(T u) const noexcept { return time_at(t_s, u, h, t_end); }
         // Ends the step: always false (the phases return `end(...)` for "the scan stops here").
-        bool end(status code, T t, std::size_t event) noexcept {
-            result = step_outcome<T>{code, t, fired_here, event};
-            result.acted = acted;
+        bool end(status ended_with, T t, std::size_t which) noexcept {
+            code = ended_with;
+            t_out = t;
+            event = which;
             return false;
         }
         // Ends the step back at the last good state, at t_good.
-        bool fail(const pack& good, T t_good, status code) {
+        bool fail(const pack& good, T t_good, status failure) {
             store(y, good);
-            return end(code, t_good, no_event);
+            return end(failure, t_good, no_event);
         }
     };
     // How a location ends: the scan goes on from b, or the step restarts from the event, or the step ends.
@@ -238,11 +252,13 @@ private:
             }
             c.partial = true;
         }
-        return c.result;
+        step_outcome<T> o{c.code, c.t_out, c.fired_here, c.event};
+        o.acted = c.acted;
+        return o;
     }
 
     // One pass over (t_s, t_end]: true when an action restarted it (c.t_s the event's time, c.h the rest of
-    // the step), false when the step is over (c.result).
+    // the step), false when the step is over (c.code, c.t_out, c.event).
     template <class Stepper, class System, class Sink>
     bool pass(Stepper& stepper, System& f, set_type& set, scan_state& c, values& g_end, Sink& sink) {
         if constexpr (interpolates) c.d.ready = false;

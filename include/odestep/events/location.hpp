@@ -36,12 +36,12 @@ class event_location<State, K, event_set<Finder, Events...>>
     using base = event_engine_base<State, K, event_set<Finder, Events...>>;
 
 public:
+    using base::E;
     using typename base::pack;
     using typename base::refs;
     using typename base::set_type;
     using typename base::T;
     using typename base::values;
-    using base::E;
 
     // Located on the interpolant (on_interpolant): the Hermite slopes at a pass's two ends.
     static constexpr bool interpolates = locates_on_interpolant_v<Finder>;
