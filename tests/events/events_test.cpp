@@ -167,6 +167,48 @@ TEST_CASE("events: two roots inside one step are missed without probes and found
     CHECK(y[0] == 1.0);
 }
 
+TEST_CASE("events: after a location the scan goes on from its bracket's end: three crossings in one step in order") {
+    // y = t over one tick [0, 1]; g1 = y - 0.5 and g2 = (y - 0.3)(y - 0.7) (which crosses at 0.3 and 0.7,
+    // positive at both ends: seen because g1's location reads it at 0.5), both recorded, so that the scan goes
+    // on through the step's own result after each. Closed form: g2 at 0.3, g1 at 0.5, g2 at 0.7.
+    auto g1 = [](double, const state1& y) { return y[0] - 0.5; };
+    auto g2 = [](double, const state1& y) { return (y[0] - 0.3) * (y[0] - 0.7); };
+    auto loop = odestep::make_event_stepper(
+        odestep::rk4<state1>{},
+        odestep::watch(odestep::make_event<state1>(g1, odestep::direction::either, odestep::record),
+                       odestep::make_event<state1>(g2, odestep::direction::either, odestep::record)));
+    state1 y{0.0};
+    REQUIRE(loop.start(0.0, 1.0, y) == odestep::status::ok);
+    const auto r = loop.tick(clock_rhs{}, y);
+    REQUIRE(r.status == odestep::status::ok);
+    REQUIRE(r.fired == 3);
+    CHECK(r.firings[0].event == 1);
+    CHECK(std::abs(r.firings[0].t - 0.3) <= 8 * eps);
+    CHECK(r.firings[1].event == 0);
+    CHECK(std::abs(r.firings[1].t - 0.5) <= 8 * eps);
+    CHECK(r.firings[2].event == 1);
+    CHECK(std::abs(r.firings[2].t - 0.7) <= 8 * eps);
+    CHECK(y[0] == 1.0);
+}
+
+TEST_CASE("events: a probe whose re-step meets NaN rolls the step back with non_finite") {
+    // y' = 1, except NaN at t = 0.25 exactly: the step of 1 from 0 evaluates f at 0, 0.5 and 1 and is finite;
+    // the probe at 0.5 re-steps 0.5 from 0, whose RK4 stages are at 0, 0.25, 0.25 and 0.5. The step is rolled
+    // back: the state at its start, non_finite, nothing fired.
+    auto hole = [](double t, const state1&) {
+        return state1{t == 0.25 ? std::numeric_limits<double>::quiet_NaN() : 1.0};
+    };
+    auto far = [](double, const state1& y) { return y[0] - 10.0; };
+    state1 y{0.0};
+    const auto r = odestep::integrate(
+        odestep::rk4<state1>{}, hole, y, 0.0, 1.0, 1.0,
+        odestep::watch(odestep::make_event<state1>(far, odestep::direction::either)).with_limits({0, 8, 1}));
+    CHECK(r.status == odestep::status::non_finite);
+    CHECK(r.t == 0.0);
+    CHECK(y[0] == 0.0);
+    CHECK(r.fired == 0);
+}
+
 TEST_CASE("events: a state-resetting action re-triggers every period and the grid is kept") {
     // Re-triggering right after a state reset (SciML/DifferentialEquations.jl#590: an event repeated at the
     // same time with fixed steps).
@@ -464,6 +506,78 @@ TEST_CASE("events: the per-tick event stepper advances exactly one dt and lists 
     CHECK(loop.firings(0) == 3);
 }
 
+TEST_CASE("events: a tick event left unarmed by its dead time is armed again by the quiet ticks after it") {
+    // y' = 1 from 0, reset to 0 when it reaches 1: the crossings are at t = 1, 2, 3 (closed form, RK4 exact).
+    // With a dead time of 0.5 the event is not armed for the ticks to 1.2 and 1.5 after each firing; the
+    // quiet ticks that follow must arm it again, or the crossings at 2 and 3 are missed.
+    auto top = [](double, const state1& y) { return y[0] - 1.0; };
+    auto reset = [](double, state1& y) { y[0] = 0.0; };
+    auto loop = odestep::make_event_stepper(
+        odestep::rk4<state1>{},
+        odestep::watch(odestep::make_event<state1>(top, odestep::direction::rising, reset).with_dead_time(0.5)));
+    state1 y{0.0};
+    REQUIRE(loop.start(0.0, 0.3, y) == odestep::status::ok);
+    std::size_t fired = 0;
+    for (std::size_t n = 0; n < 11; ++n) {
+        const auto r = loop.tick(clock_rhs{}, y);
+        REQUIRE(r.status == odestep::status::ok);
+        if (r.fired) {
+            ++fired;
+            CHECK(std::abs(r.firings[0].t - static_cast<double>(fired)) <= 64 * eps * 3.0);
+        }
+    }
+    CHECK(fired == 3);
+    CHECK(loop.firings(0) == 3);
+}
+
+TEST_CASE("events: the per-tick loop and integrate locate the same crossings, bit for bit") {
+    // One engine, one grid: a pebble thrown up at 20 m/s against quadratic drag (k = 0.05 / m), its apex and
+    // its landing recorded by a noting action, stepped by ticks and by integrate, fire at the same times to the
+    // bit, and the finder takes the same iterations (as many g evaluations): it starts from the events' values
+    // at the step's start, which the quiet ticks keep as integrate's quiet steps do.
+    struct drag {
+        state2 operator()(double, const state2& s) const { return {s[1], -gravity - 0.05 * s[1] * std::abs(s[1])}; }
+    };
+    std::size_t g_calls = 0;
+    auto counted_speed = [&g_calls](double, const state2& s) {
+        ++g_calls;
+        return s[1];
+    };
+    auto counted_height = [&g_calls](double, const state2& s) {
+        ++g_calls;
+        return s[0];
+    };
+    std::array<double, 2> by_integrate{-1.0, -1.0};
+    auto note = [&](std::size_t i) { return [&by_integrate, i](double t, state2&) { by_integrate[i] = t; }; };
+    state2 y{0.0, 20.0};
+    const auto r = odestep::integrate(
+        odestep::rk4<state2>{}, drag{}, y, 0.0, 4.0, 0.01,
+        odestep::watch(odestep::make_event<state2>(counted_speed, odestep::direction::falling, note(0)),
+                       odestep::make_event<state2>(counted_height, odestep::direction::falling, note(1))));
+    REQUIRE(r.status == odestep::status::ok);
+    REQUIRE(r.fired == 2);
+    const std::size_t g_by_integrate = g_calls;
+    g_calls = 0;
+    std::array<double, 2> by_ticks{-1.0, -1.0};
+    auto tick_note = [](double, state2&) {};
+    auto loop = odestep::make_event_stepper(
+        odestep::rk4<state2>{},
+        odestep::watch(odestep::make_event<state2>(counted_speed, odestep::direction::falling, tick_note),
+                       odestep::make_event<state2>(counted_height, odestep::direction::falling, tick_note)));
+    state2 z{0.0, 20.0};
+    REQUIRE(loop.start(0.0, 0.01, z) == odestep::status::ok);
+    for (int n = 0; n < 400; ++n) {
+        const auto t = loop.tick(drag{}, z);
+        REQUIRE(t.status == odestep::status::ok);
+        for (std::size_t k = 0; k < t.fired; ++k) by_ticks[t.firings[k].event] = t.firings[k].t;
+    }
+    CHECK(by_ticks[0] > 0.0);
+    CHECK(by_ticks[1] > by_ticks[0]);
+    CHECK(std::memcmp(by_ticks.data(), by_integrate.data(), sizeof by_ticks) == 0);
+    CHECK(std::memcmp(z.data(), y.data(), sizeof z) == 0);
+    CHECK(g_calls == g_by_integrate);
+}
+
 TEST_CASE("events: after a terminal tick the next tick goes from the event back to the grid and on to its own") {
     auto half = [](double, const state1& y) { return y[0] - 0.5; };
     auto loop = odestep::make_event_stepper(
@@ -489,6 +603,33 @@ TEST_CASE("events: after a terminal tick the next tick goes from the event back 
     state1 z{0.25};
     CHECK(fresh.tick(clock_rhs{}, z).status == odestep::status::invalid_time);
     CHECK(z[0] == 0.25);
+}
+
+TEST_CASE("events: start after a tick that stopped inside its period begins a fresh clock, as a new loop's") {
+    // A loop stopped off the grid (at y = 0.5, t = 0.5) and started again at t0 = 0.1 with dt = 0.2: its first
+    // tick is one step of exactly dt, bit for bit a new loop's (a step back to the grid would be
+    // (0.1 + 0.2) - 0.1 = 0.20000000000000004 long), and ends on t0 + dt.
+    auto half = [](double, const state1& y) { return y[0] - 0.5; };
+    const auto ev = odestep::make_event<state1>(half, odestep::direction::rising);
+    auto loop = odestep::make_event_stepper(odestep::rk4<state1>{}, odestep::watch(ev));
+    state1 y{0.0};
+    REQUIRE(loop.start(0.0, 0.3, y) == odestep::status::ok);
+    REQUIRE(loop.tick(clock_rhs{}, y).status == odestep::status::ok);
+    REQUIRE(loop.tick(clock_rhs{}, y).status == odestep::status::stopped_by_event);
+    y = state1{0.0};
+    REQUIRE(loop.start(0.1, 0.2, y) == odestep::status::ok);
+    const auto r = loop.tick(clock_rhs{}, y);
+    auto twin = odestep::make_event_stepper(odestep::rk4<state1>{}, odestep::watch(ev));
+    state1 z{0.0};
+    REQUIRE(twin.start(0.1, 0.2, z) == odestep::status::ok);
+    const auto rz = twin.tick(clock_rhs{}, z);
+    CHECK(r.status == odestep::status::ok);
+    CHECK(rz.status == odestep::status::ok);
+    CHECK(r.t == 0.1 + 0.2);
+    CHECK(rz.t == r.t);
+    CHECK(std::memcmp(y.data(), z.data(), sizeof y) == 0);
+    CHECK(loop.ticks() == 1);
+    CHECK(loop.reached() == 1);
 }
 
 TEST_CASE("events: rearm measures crossings from the caller's new state and keeps max_firings and the dead time") {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
 // odestep: the cubic Hermite interpolant of a step, shared by dense output (adaptive/dense.hpp) and the event
-// loop's location on the interpolant (events/engine.hpp).
+// loop's location on the interpolant (events/location.hpp).
 #ifndef ODESTEP_DETAIL_HERMITE_HPP
 #define ODESTEP_DETAIL_HERMITE_HPP
 

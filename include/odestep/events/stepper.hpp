@@ -97,7 +97,8 @@ public:
         // monotonic in n): then the quiet tick needs no test of its grid time. Otherwise (a dt or t0 near the
         // top of T's range) every tick takes catch_up, which tests it before the step.
         unbounded_clock_ = !detail::is_finite(clock_.time(std::numeric_limits<std::uint64_t>::max()));
-        clock_state_ = unbounded_clock_ ? clock_state::behind : clock_state::on_grid;
+        off_grid_ = false;
+        settle_clock();
         return status::ok;
     }
 
@@ -116,6 +117,7 @@ public:
         const status s = engine_.reread(set_, time(), ptrs);
         if (s != status::ok) return s;
         detail::reset_if_any(stepper_);
+        settle_clock();  // (the events' arming may have changed)
         return status::ok;
     }
 
@@ -196,7 +198,7 @@ private:
         }
         const T t_end = grid_time();  // finite: an unbounded clock never takes this path (see start)
         typename engine_type::values g;
-        if (ODESTEP_UNLIKELY(!engine_.settle(set_, ptrs, t_end, g))) return rest(f, ptrs, start, g, t_end);
+        if (ODESTEP_UNLIKELY(!engine_.settle_armed(set_, ptrs, t_end, g))) return rest(f, ptrs, start, g, t_end);
         ++n_;
         t_now_ = t_end;
         r.t = t_end;
@@ -290,8 +292,9 @@ private:
     // The rest of one piece after settle returned false: the engine's advance_rest, its firings appended to
     // r's list, and the clock moved to where the piece ended.
     template <class System>
-    void finish_piece(System& f, const ptrs_type& ptrs, typename engine_type::pack& start,
-                      const typename engine_type::values& g, T t_start, T h, T t_end, tick_result<T, Capacity>& r) {
+    ODESTEP_INLINE void finish_piece(System& f, const ptrs_type& ptrs, typename engine_type::pack& start,
+                                     const typename engine_type::values& g, T t_start, T h, T t_end,
+                                     tick_result<T, Capacity>& r) {
         const std::size_t offset = r.fired;
         auto sink = [&r, offset](std::size_t k, std::size_t i, T t) {
             if (offset + k < Capacity) r.firings[offset + k] = event_firing<T>{i, t};
@@ -316,11 +319,20 @@ private:
     void account(const tick_result<T, Capacity>& r, std::uint64_t target) noexcept {
         const std::uint64_t counted = is_error(r.status) ? target - 1 : target;
         lag_ = counted > n_ ? counted - n_ : 0;
-        clock_state_ = lag_ == 0 && !off_grid_ && !unbounded_clock_ ? clock_state::on_grid : clock_state::behind;
+        settle_clock();
     }
 
-    // idle: before start; on_grid: the state is at t0 + n dt and no period is owed; behind: the state is off
-    // the grid (a tick stopped inside its period), periods are owed (lag_), or the clock is unbounded.
+    // The quiet tick's path (on_grid) or the general one (behind), after anything that moved the clock or
+    // may have changed the events' arming.
+    void settle_clock() noexcept {
+        const bool quiet_path = lag_ == 0 && !off_grid_ && !unbounded_clock_ && engine_.all_armed;
+        clock_state_ = quiet_path ? clock_state::on_grid : clock_state::behind;
+    }
+
+    // idle: before start; on_grid: the state is at t0 + n dt, no period is owed, and every event is armed
+    // with no probes (the engine's all_armed: the quiet test is then one product per event); behind: the
+    // state is off the grid (a tick stopped inside its period), periods are owed (lag_), the clock is
+    // unbounded, or an event is not armed (catch_up's step then takes the engine's full quiet test).
     enum class clock_state : unsigned char { idle, on_grid, behind };
 
     Stepper stepper_;
