@@ -237,6 +237,54 @@ TEST_CASE("counts: the per-tick event loop counts since start, the quiet ticks' 
     }
 }
 
+TEST_CASE("counts: the free-running loops with events report f, g, J and the firings") {
+    const auto bounce = [](double, S2& y) { y[1] = -0.9 * y[1]; };
+    step_count observed = 0;
+    const auto observe = [&](double, const S2&) { ++observed; };
+    SUBCASE("integrate_adaptive, Dormand-Prince 5(4), a bounce and a record event") {
+        step_count f_calls = 0;
+        step_count g_calls = 0;
+        step_count h_calls = 0;
+        auto f = count_calls(ball, &f_calls);
+        auto g = count_calls([](double, const S2& y) { return y[0]; }, &g_calls);
+        auto apex = count_calls([](double, const S2& y) { return y[1]; }, &h_calls);
+        odestep::adaptive_rk<odestep::tables::dormand_prince54, S2> engine(
+            odestep::tolerances<S2>::uniform(1e-8, 1e-8));
+        S2 y{1.0, 0.0};
+        const auto r = odestep::integrate_adaptive(
+            engine, f, y, 0.0, 2.0,
+            odestep::watch(odestep::make_event<S2>(g, odestep::direction::falling, bounce),
+                           odestep::make_event<S2>(apex, odestep::direction::falling, odestep::record)),
+            observe);
+        REQUIRE(r.status == odestep::status::ok);
+        REQUIRE(r.firings[0] >= 2);  // lands at 0.45 s, and again at 1.26 s
+        REQUIRE(r.firings[1] >= 1);
+        CHECK(r.counts.rhs_evals == f_calls);
+        CHECK(r.counts.event_evals == g_calls + h_calls);
+        CHECK(r.counts.firings == r.fired);
+        CHECK(r.counts.accepted_steps == r.steps);
+    }
+    SUBCASE("integrate_adaptive, Radau 5(4) (f, J and factorizations), a terminal event") {
+        step_count f_calls = 0;
+        step_count j_calls = 0;
+        step_count g_calls = 0;
+        auto f = count_calls(stiff_f, &f_calls);
+        auto jac = count_calls(stiff_j, &j_calls);
+        auto g = count_calls([](double, const S2& y) { return y[1] - 0.5; }, &g_calls);  // y2 = e^-t: t = ln 2
+        odestep::radau5<S2> engine(odestep::tolerances<S2>::uniform(1e-8, 1e-8));
+        S2 y{1.0, 1.0};
+        const auto r = odestep::integrate_adaptive(
+            engine, odestep::with_jacobian(f, jac), y, 0.0, 5.0,
+            odestep::watch(odestep::make_event<S2>(g, odestep::direction::falling, odestep::terminal)), observe);
+        REQUIRE(r.status == odestep::status::stopped_by_event);
+        CHECK(r.counts.rhs_evals == f_calls);
+        CHECK(r.counts.jacobian_evals == j_calls);
+        CHECK(r.counts.event_evals == g_calls);
+        CHECK(r.counts.factorizations >= 2);  // a real and a complex one per decomposition, at least one
+        CHECK(r.counts.firings == 1);
+    }
+}
+
 TEST_CASE("counts: the free-running adaptive loops report f, accepted and rejected steps") {
     step_count observed = 0;
     const auto observe = [&](double, const S2&) { ++observed; };

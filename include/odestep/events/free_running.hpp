@@ -404,17 +404,27 @@ event_integrate_result<value_type_t<State>, Set::size> free_running_events(Engin
                                                                            Output& out, step_count max_attempts,
                                                                            status checked) {
     using T = value_type_t<State>;
-    using replayed_type = replayed_step<Engine, System, State>;
+    // Every evaluation of f counted (the attempts', the interpolant's, the engine's Hermite slopes and headings):
+    // the engine's own counters give J, the factorizations, Newton iterations, accepted and rejected steps.
+    const counts before = engine_counts(engine);
+    evaluation_tally tally;
+    auto counted = counting(f, tally);
+    using counted_system = decltype(counted);
+    using replayed_type = replayed_step<Engine, counted_system, State>;
     using stepper_type = replaying_stepper<replayed_type, State>;
     using engine_type = event_engine<State, 1, Set>;
     constexpr std::size_t E = Set::size;
     engine_type events;
+    step_count advances = 0;  // steps handed to the event engine: E evaluations of g each, off its work count
     const auto finish = [&](status s, T t, step_count steps, std::size_t event) {
         event_integrate_result<T, E> r{s, t, steps, event, 0, {}};
         for (std::size_t i = 0; i < E; ++i) {
             r.firings[i] = events.memory[i].fired;
             r.fired += events.memory[i].fired;
         }
+        r.counts = engine_work(engine, before, tally);
+        r.counts.event_evals = (advances - events.work.failed_steps) * E + events.work.g;
+        r.counts.firings = r.fired;
         return r;
     };
     if (checked != status::ok) return finish(checked, t0, 0, no_event);
@@ -423,7 +433,7 @@ event_integrate_result<value_type_t<State>, Set::size> free_running_events(Engin
     if (started != status::ok) return finish(started, t0, 0, no_event);
     out.start(t0, static_cast<const State&>(y));
     if (t0 == t1 && !all_finite(y)) return finish(status::non_finite, t0, 0, no_event);
-    replayed_type replayed(engine, f);
+    replayed_type replayed(engine, counted);
     stepper_type replay(replayed);
     const bool forward = !(t1 < t0);
     const std::size_t cap = set.limits.max_firings_per_step;
@@ -440,7 +450,7 @@ event_integrate_result<value_type_t<State>, Set::size> free_running_events(Engin
         const T t_s = t;
         const State y_s = y;
         bool accepted = false;
-        status s = engine.attempt(f, t, y, t1, accepted, replayed.ext.sink());
+        status s = engine.attempt(counted, t, y, t1, accepted, replayed.ext.sink());
         if (s != status::ok) return finish(s, t, steps, no_event);
         if (!accepted) continue;
         replayed.begin(t_s, y_s, t, y);
@@ -450,7 +460,8 @@ event_integrate_result<value_type_t<State>, Set::size> free_running_events(Engin
             used = 0;
         }
         set.limits.max_firings_per_step = cap - used;
-        const step_outcome<T> o = events.advance(replay, f, set, y_refs, t_s, replayed.h, replayed.t_e, sink);
+        ++advances;
+        const step_outcome<T> o = events.advance(replay, counted, set, y_refs, t_s, replayed.h, replayed.t_e, sink);
         set.limits.max_firings_per_step = cap;
         if (o.fired != 0) {
             if (!window) window_end = replayed.t_e;
