@@ -929,7 +929,9 @@ static void test_event_counts(void) {
     CHECK(odestep_event_loop_counts_d(&loop, &counts) == ODESTEP_INVALID_TIME); /* before start */
     CHECK(odestep_event_loop_counts_d(&loop, NULL) == ODESTEP_INVALID_SETTING);
     CHECK(odestep_event_loop_start_d(&loop, &odestep_rk4_d, &ground, 1, NULL, &sys, y, 0.0, 0.01) == ODESTEP_OK);
-    for (k = 0; k < 200; ++k) CHECK(odestep_event_loop_tick_d(&loop, &sys, y, NULL) == ODESTEP_OK);
+    for (k = 0; k < 200; ++k) {
+        CHECK(odestep_event_loop_tick_d(&loop, &sys, y, NULL) == ODESTEP_OK);
+    }
     CHECK(odestep_event_loop_counts_d(&loop, &counts) == ODESTEP_OK);
     CHECK(counts.rhs_evals == c.f_calls);
     CHECK(counts.event_evals == c.g_calls);
