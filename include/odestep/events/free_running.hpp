@@ -21,6 +21,7 @@
 #include "../status.hpp"
 #include "../stiff/radau5.hpp"
 #include "../stiff/rosenbrock_adaptive.hpp"
+#include "../stiff/sdirk_adaptive.hpp"
 #include "bounds.hpp"
 #include "engine.hpp"
 #include "event.hpp"
@@ -165,6 +166,37 @@ struct free_extension<rosenbrock_adaptive<Method, State>> {
         return all_finite(f0) && all_finite(f1) ? status::ok : status::non_finite;
     }
     void at_offset(T s, State& out) const noexcept { hermite_from_start(y0, f0, y1, f1, t1 - t0, s / (t1 - t0), out); }
+};
+
+// The SDIRK pairs: cubic Hermite through the step's ends and the slopes the step already has (what sdirk_dense
+// is given: the previous point's and the last stage's), read about the start: no evaluation of f.
+template <class Method, class State>
+struct free_extension<sdirk_adaptive<Method, State>> {
+    using T = value_type_t<State>;
+    static constexpr std::size_t rhs_evals_to_complete = 0;
+    struct sink_type {
+        free_extension* self;
+        void operator()(const T&, const T& step, const State& y_old, const State& slope_old, const State& y_new,
+                        const State& slope_new) const noexcept {
+            self->h = step;
+            assign(self->y0, y_old);
+            assign(self->f0, slope_old);
+            assign(self->y1, y_new);
+            assign(self->f1, slope_new);
+        }
+    };
+    T h = T(1);
+    State y0{};
+    State f0{};
+    State y1{};
+    State f1{};
+    sink_type sink() noexcept { return sink_type{this}; }
+    void begin(T, const State&, T, const State&) noexcept {}
+    template <class System>
+    status complete(System&, sdirk_adaptive<Method, State>&) noexcept {
+        return status::ok;
+    }
+    void at_offset(T s, State& out) const noexcept { hermite_from_start(y0, f0, y1, f1, h, s / h, out); }
 };
 
 // One accepted step, as the replaying stepper reads it: its ends (exact), its extension inside (completed on
@@ -529,11 +561,11 @@ auto times_with_events(Engine& engine, System& f, State& y, value_type_t<State> 
 }  // namespace detail
 
 /// The most evaluations of f one free-running run with events can make, for `Engine` (adaptive_rk,
-/// radau5, rosenbrock_adaptive), `events` events with these limits and at most `max_attempts` attempts:
+/// radau5, rosenbrock_adaptive, sdirk_adaptive), `events` events with these limits and at most `max_attempts` attempts:
 ///   A + M (P + A + X + B)
 /// with A = 1 + Engine::rhs_evals_to_start (a start, and a restart after an action), P =
 /// Engine::rhs_evals_per_attempt, X the extension's completion (dense_step::rhs_evals_to_complete; none for
-/// Radau's polynomial; 2 for the Rosenbrock pairs' Hermite ends) and B = max_rhs_evals_per_step of a step
+/// Radau's polynomial and the SDIRK pairs' Hermite ends; 2 for the Rosenbrock pairs' Hermite ends) and B = max_rhs_evals_per_step of a step
 /// that costs nothing to re-take (the location reads the extension; B counts f after each action, and with
 /// on_interpolant the Hermite slopes). SIZE_MAX when it does not fit std::size_t.
 template <class Engine, class Finder = default_root_finder>
@@ -619,6 +651,24 @@ template <class Method, class State, class System, class Set, std::enable_if_t<d
     return detail::adaptive_with_events(engine, f, y, t0, t1, events, none, default_max_attempts);
 }
 
+/// integrate_adaptive with events and an SDIRK pair: located on the cubic Hermite interpolant of the step's
+/// ends and slopes (no evaluation of f), otherwise as above.
+template <class Method, class State, class System, class Set, class Observer,
+          std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
+[[nodiscard]] auto integrate_adaptive(sdirk_adaptive<Method, State>& engine, System&& f, State& y,
+                                      detail::time_t_of<State> t0, detail::time_t_of<State> t1, Set&& events,
+                                      Observer&& observe, step_count max_attempts = default_max_attempts) {
+    return detail::adaptive_with_events(engine, f, y, t0, t1, events, observe, max_attempts);
+}
+
+/// integrate_adaptive with events and an SDIRK pair, without an observer.
+template <class Method, class State, class System, class Set, std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
+[[nodiscard]] auto integrate_adaptive(sdirk_adaptive<Method, State>& engine, System&& f, State& y,
+                                      detail::time_t_of<State> t0, detail::time_t_of<State> t1, Set&& events) {
+    detail::no_observer none;
+    return detail::adaptive_with_events(engine, f, y, t0, t1, events, none, default_max_attempts);
+}
+
 /// integrate_times with events: the free-running run to the last of `times` (as integrate_times), watching
 /// `events` as integrate_adaptive with events does. The observer sees every time of `times` up to where the
 /// run ends (from the step's extension inside a step, the step's own state at its end; after an action, the
@@ -638,6 +688,24 @@ template <class State, class System, class Times, class Set, class Observer,
           std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
 [[nodiscard]] auto integrate_times(radau5<State>& engine, System&& f, State& y, detail::time_t_of<State> t0,
                                    const Times& times, Set&& events, Observer&& observe,
+                                   step_count max_attempts = default_max_attempts) {
+    return detail::times_with_events(engine, f, y, t0, times, events, observe, max_attempts);
+}
+
+/// integrate_times with events and a Rosenbrock pair (the cubic Hermite interpolant of the step's ends).
+template <class Method, class State, class System, class Times, class Set, class Observer,
+          std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
+[[nodiscard]] auto integrate_times(rosenbrock_adaptive<Method, State>& engine, System&& f, State& y,
+                                   detail::time_t_of<State> t0, const Times& times, Set&& events, Observer&& observe,
+                                   step_count max_attempts = default_max_attempts) {
+    return detail::times_with_events(engine, f, y, t0, times, events, observe, max_attempts);
+}
+
+/// integrate_times with events and an SDIRK pair (the cubic Hermite interpolant of the step's ends and slopes).
+template <class Method, class State, class System, class Times, class Set, class Observer,
+          std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
+[[nodiscard]] auto integrate_times(sdirk_adaptive<Method, State>& engine, System&& f, State& y,
+                                   detail::time_t_of<State> t0, const Times& times, Set&& events, Observer&& observe,
                                    step_count max_attempts = default_max_attempts) {
     return detail::times_with_events(engine, f, y, t0, times, events, observe, max_attempts);
 }

@@ -74,7 +74,7 @@ template <class Method, class State, class System>
 /// integrate_adaptive with an SDIRK pair (odestep::sdirk_adaptive): the same contract as with the Radau IIA 5
 /// engine, at most 1 + rhs_evals_to_start + max_attempts * rhs_evals_per_attempt evaluations of f.
 template <class Method, class State, class System, class Observer,
-          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>>, int> = 0>
+          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>> && !detail::is_event_set_v<Observer>, int> = 0>
 [[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(sdirk_adaptive<Method, State>& engine,
                                                                        System&& f, State& y,
                                                                        detail::time_t_of<State> t0,
