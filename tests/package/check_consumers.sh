@@ -4,7 +4,8 @@
 # add_subdirectory, and fetched with FetchContent; in the last two, odestep's own tests must not build. Where
 # arm-none-eabi-g++ is installed, also cross-compiles tests/package/firmware_consumer for Cortex-M4F the
 # same three ways, with the project's toolchain file, and find_package once more under a toolchain that
-# searches packages only in its sysroot (CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY), with odestep_DIR given.
+# searches packages only in its sysroot (CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY), with odestep_DIR given;
+# with qemu-system-arm, docs/cortex-m.md's recipe for a user's own image (tests/package/board_consumer).
 # Usage: check_consumers.sh SOURCE_DIR WORK_DIR CXX_COMPILER
 # After the install, the consumers build side by side (JOBS at a time, default nproc), each into its own log;
 # a failure prints its log.
@@ -79,10 +80,44 @@ firmware_strict() {
   echo "ok: cross-compiled firmware, find_package with odestep_DIR under CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY"
 }
 
+# docs/cortex-m.md's recipe "Your own image under QEMU" from the installed package, for a core and its QEMU
+# board: the installed toolchain file and board support, an image from C and C++ sources built with the
+# user's own -fstack-usage in CMAKE_C_FLAGS and CMAKE_CXX_FLAGS (every compile must still carry the core's
+# flags, FLAGS...), run with the recipe's QEMU command as the doc prints it, its output compared with the doc's.
+board_image() {  # board_image TOOLCHAIN MACHINE FLAGS...
+  local core=$1 machine=$2 build="$work/board-$1/build" doc="$src/docs/cortex-m.md" run expected output
+  shift 2
+  cmake -S "$src/tests/package/board_consumer" -B "$build" -DCMAKE_PREFIX_PATH="$work/prefix" \
+        -DCMAKE_TOOLCHAIN_FILE="$work/prefix/share/odestep/toolchains/$core.cmake" \
+        -DCMAKE_C_FLAGS=-fstack-usage -DCMAKE_CXX_FLAGS=-fstack-usage -DCMAKE_EXPORT_COMPILE_COMMANDS=ON >/dev/null
+  cmake --build "$build" >/dev/null
+  python3 - "$build/compile_commands.json" -fstack-usage "$@" <<'PY'
+import json, sys
+entries = json.load(open(sys.argv[1]))
+bad = [e["file"] for e in entries if not all(f in e["command"].split() for f in sys.argv[2:])]
+if len(entries) < 4 or bad:
+    sys.exit(f"FAIL: compiles without {sys.argv[2:]}: {bad or entries}")
+PY
+  test -f "$build/CMakeFiles/app.dir/closed_form.c.su"  # the user's C flag reached the C compile
+  run=$(grep -m1 "^qemu-system-arm -M $machine .* -kernel build/app\$" "$doc") ||
+    { echo "FAIL: no QEMU command for $machine and build/app in $doc"; exit 1; }
+  expected=$(awk '/^<!-- board image output -->$/ { on = 1; next } on == 1 && /^```/ { on = 2; next }
+                  on == 2 && /^```$/ { exit } on == 2' "$doc")
+  output=$(cd "$work/board-$core" && timeout 60 ${run})
+  [ "$output" = "$expected" ] || { echo "FAIL: the image printed '$output', $doc shows '$expected'"; exit 1; }
+  echo "ok: docs/cortex-m.md's own image under QEMU $machine from the installed package ($core, the user's flags kept)"
+}
+
 checks=("host_consumer find_package" "host_consumer add_subdirectory" "host_consumer FetchContent" readme_snippet)
 if command -v arm-none-eabi-g++ >/dev/null; then
   checks+=("firmware_consumer find_package" "firmware_consumer add_subdirectory" "firmware_consumer FetchContent"
            firmware_strict)
+  if command -v qemu-system-arm >/dev/null; then
+    checks+=("board_image cortex-m4f mps2-an386 -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard"
+             "board_image cortex-m0 microbit -mcpu=cortex-m0 -mthumb -mfloat-abi=soft")
+  else
+    echo "skipped: the recipe's own image under QEMU (no qemu-system-arm)"
+  fi
 else
   echo "skipped: the cross-compiled consumer (no arm-none-eabi-g++)"
 fi

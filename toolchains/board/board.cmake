@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: BSL-1.0
 # The bare-metal harness an image links to run under QEMU: startup code, syscall stubs and the core's linker
-# script (ODESTEP_TARGET_LINKER_SCRIPT, set by the per-core toolchain file). Test infrastructure only.
+# script (ODESTEP_TARGET_LINKER_SCRIPT, set by the per-core toolchain file). The tests' images use it, and a
+# user's own image from the installed package (find_package(odestep) sets odestep_BOARD_CMAKE to this file;
+# docs/cortex-m.md, "Your own image under QEMU"). QEMU's memory maps: a real board has its own.
 #
 #   odestep_board       for the doctest images: newlib's semihosting C library (rdimon) gives printf and
 #                       iostreams, and main's return value goes through exit().
@@ -8,7 +10,7 @@
 #                       away, so an image that allocates (malloc, operator new, newlib's _malloc_r) fails to
 #                       link. Output goes through semihosting calls the image makes itself.
 #
-#   include(${PROJECT_SOURCE_DIR}/toolchains/board/board.cmake)
+#   include(${PROJECT_SOURCE_DIR}/toolchains/board/board.cmake)      # or include(${odestep_BOARD_CMAKE})
 #   target_link_libraries(my_image PRIVATE odestep_board)   # or odestep_board_bare
 include_guard(GLOBAL)
 

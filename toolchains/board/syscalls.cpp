@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // Stubs the test images need because they are linked with -nostartfiles (startup.cpp replaces the toolchain's
 // crt0/crti/crtbegin) and because libstdc++ references a few functions newlib does not provide.
-// Test infrastructure only, like the rest of toolchains/board/.
+// For images run under QEMU, like the rest of toolchains/board/ (docs/cortex-m.md).
 
 #include <cerrno>
 #include <cstddef>
