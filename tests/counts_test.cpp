@@ -102,9 +102,72 @@ TEST_CASE("counts: a fixed-step implicit stepper reports f, its own Jacobian's c
     REQUIRE(r.status == odestep::status::ok);
     CHECK(r.counts.rhs_evals == f_calls);
     CHECK(r.counts.jacobian_evals == j_calls);
-    CHECK(j_calls == 10);                    // one Jacobian per step (jacobians_per_step)
-    CHECK(r.counts.factorizations == 10);    // one factorization per step
-    CHECK(r.counts.newton_iterations == 0);  // not reported by the fixed-step implicit steppers
+    CHECK(j_calls == 10);                  // one Jacobian per step (jacobians_per_step)
+    CHECK(r.counts.factorizations == 10);  // one factorization per step
+    // Radau IIA 5 with the system's Jacobian evaluates f only in its Newton iterations, at its three stages
+    CHECK(r.counts.newton_iterations * 3 == f_calls);
+    CHECK(r.counts.newton_iterations >= 10);  // at least one a step
+}
+
+// y' = -y^3 (nonlinear: Newton takes a varying number of iterations) and its Jacobian -3 y^2.
+const auto cubic_f = [](double, const S1& y) { return S1{-y[0] * y[0] * y[0]}; };
+const auto cubic_j = [](double, const S1& y, odestep::jacobian_t<S1>& m) { m[0] = S1{-3.0 * y[0] * y[0]}; };
+
+TEST_CASE("counts: the fixed-step implicit steppers report their Newton iterations in every loop") {
+    step_count f_calls = 0;
+    step_count j_calls = 0;
+    auto sys = odestep::with_jacobian(count_calls(cubic_f, &f_calls), count_calls(cubic_j, &j_calls));
+    SUBCASE("backward Euler with the system's Jacobian: each iteration is f's one call (newton<10>)") {
+        S1 y{1.0};
+        const auto r = odestep::integrate(odestep::backward_euler<S1>{}, sys, y, 0.0, 1.0, 0.1);
+        REQUIRE(r.status == odestep::status::ok);
+        CHECK(r.counts.newton_iterations == f_calls);
+        CHECK(r.counts.newton_iterations > r.steps);  // nonlinear: more than one iteration in some step
+        CHECK(r.counts.jacobian_evals == j_calls);
+    }
+    SUBCASE("fixed_newton<3>: exactly three iterations a step, in integrate_n_steps") {
+        S1 y{1.0};
+        const auto r =
+            odestep::integrate_n_steps(odestep::backward_euler<S1, odestep::fixed_newton<3>>{}, sys, y, 0.0, 0.1, 10);
+        REQUIRE(r.status == odestep::status::ok);
+        CHECK(r.counts.newton_iterations == 30);
+        CHECK(f_calls == 30);
+    }
+    SUBCASE("Radau IIA 5, fixed_newton<4>, difference Jacobian: 4 iterations a step of 3 evaluations each") {
+        step_count calls = 0;
+        auto f = count_calls(stiff_f, &calls);
+        S2 y{1.0, 1.0};
+        const auto r =
+            odestep::integrate_n_steps(odestep::radau_iia5<S2, odestep::fixed_newton<4>>{}, f, y, 0.0, 0.1, 10);
+        REQUIRE(r.status == odestep::status::ok);
+        CHECK(r.counts.newton_iterations == 40);
+        CHECK(calls == 10 * (4 * 3 + 2 + 1));  // the iterations' 3 a time, and the difference Jacobian's N + 1
+        CHECK(r.counts.rhs_evals == calls);
+    }
+    SUBCASE("integrate with events (re-stepping), and the per-tick loop: f's calls are all iterations") {
+        // y = 1 / sqrt(1 + 2t) crosses 0.5 at t = 1.5: a record event re-steps through the crossing
+        auto g = [](double, const S1& y) { return y[0] - 0.5; };
+        auto events = odestep::watch(odestep::make_event<S1>(g, odestep::direction::falling, odestep::record));
+        S1 y{1.0};
+        const auto r = odestep::integrate(odestep::backward_euler<S1>{}, sys, y, 0.0, 2.0, 0.1, events);
+        REQUIRE(r.status == odestep::status::ok);
+        REQUIRE(r.fired == 1);
+        CHECK(r.counts.newton_iterations == f_calls);
+        CHECK(r.counts.newton_iterations > r.steps);  // the location's re-steps iterate too
+        f_calls = 0;
+        auto loop = odestep::make_event_stepper(odestep::backward_euler<S1>{}, events);
+        S1 u{1.0};
+        REQUIRE(loop.start(0.0, 0.1, u) == odestep::status::ok);
+        for (int k = 0; k < 20; ++k) REQUIRE(loop.tick(sys, u).status == odestep::status::ok);
+        REQUIRE(loop.firings(0) == 1);
+        CHECK(loop.counts().newton_iterations == f_calls);
+    }
+    SUBCASE("a step called directly, on a system no loop counts, compiles and runs (the counter is the loop's)") {
+        S1 y{1.0};
+        const odestep::backward_euler<S1> stepper;
+        REQUIRE(stepper.step(sys, y, 0.0, 0.1) == odestep::status::ok);
+        CHECK(f_calls >= 1);
+    }
 }
 
 // A falling ball, y = (height, velocity), bouncing on the floor with restitution 0.9.
@@ -330,6 +393,33 @@ TEST_CASE("counts: the free-running adaptive loops report f, accepted and reject
         CHECK(r.counts.rhs_evals == calls);
         CHECK(r.counts.accepted_steps == sol.size());
     }
+}
+
+TEST_CASE("counts: adaptive_sampler reports its run's work over its advance_to calls") {
+    step_count calls = 0;
+    auto f = count_calls(sho, &calls);
+    using M = odestep::tables::dop853;  // its interpolant costs three more evaluations a step it is used in
+    const odestep::adaptive_rk<M, S2> engine(odestep::tolerances<S2>::uniform(1e-8, 1e-8));
+    odestep::adaptive_sampler<M, S2> sampler(engine, 0.0, S2{1.0, 0.0}, 10.0);
+    CHECK(sampler.counts().rhs_evals == 0);  // nothing evaluated before advance_to
+    S2 y{};
+    for (const double t : {0.5, 1.0, 2.5, 4.0, 7.0, 10.0}) REQUIRE(sampler.advance_to(f, t, y) == odestep::status::ok);
+    const odestep::counts c = sampler.counts();
+    CHECK(c.rhs_evals == calls);
+    CHECK(c.accepted_steps == sampler.steps());
+    // the same steps as integrate_adaptive over [0, 10] (the class's promise): its accepted and rejected steps
+    step_count observed = 0;
+    odestep::adaptive_rk<M, S2> twin(odestep::tolerances<S2>::uniform(1e-8, 1e-8));
+    S2 z{1.0, 0.0};
+    const auto r = odestep::integrate_adaptive(twin, sho, z, 0.0, 10.0, [&](double, const S2&) { ++observed; });
+    REQUIRE(r.status == odestep::status::ok);
+    CHECK(c.accepted_steps == observed - 1);
+    CHECK(c.rejected_steps == r.counts.rejected_steps);
+    // asking again for t = 10, the run's own state, evaluates nothing
+    const step_count before = calls;
+    REQUIRE(sampler.advance_to(f, 10.0, y) == odestep::status::ok);
+    CHECK(sampler.counts().rhs_evals == calls);
+    CHECK(calls == before);
 }
 
 TEST_CASE("counts: the stiff engines report f, J, factorizations and Newton iterations") {

@@ -24,8 +24,9 @@ namespace odestep {
 /// - event_evals: evaluations of event functions g, each g of a set counted once per call (the start's too).
 /// - factorizations: LU factorizations of an iteration matrix (Radau IIA 5: a real and a complex one per
 ///   decomposition, two, as SciPy's nlu counts them).
-/// - newton_iterations: Newton iterations of the error-controlled Radau IIA 5 engine (radau5); the
-///   fixed-step implicit steppers (implicit_rk) do not report theirs (zero).
+/// - newton_iterations: Newton iterations: of the fixed-step implicit steppers (implicit_rk: every solve's,
+///   a fully implicit table's all stages at once, a diagonally implicit one's stage by stage) and of the
+///   error-controlled engines (radau5, the SDIRK pairs); zero for the methods without a Newton solve.
 /// - accepted_steps: steps that stand: a fixed-grid loop's completed grid steps; an adaptive or stiff engine's
 ///   accepted steps (adaptive_substeps / stiff_substeps: their engine's, inside the grid steps).
 /// - rejected_steps: attempts an error-controlled engine rejected (zero on a fixed grid).
@@ -35,7 +36,7 @@ struct counts {
     step_count jacobian_evals = 0;     ///< Jacobians formed (the system's own or by differences)
     step_count event_evals = 0;        ///< evaluations of event functions g
     step_count factorizations = 0;     ///< LU factorizations
-    step_count newton_iterations = 0;  ///< Newton iterations (radau5)
+    step_count newton_iterations = 0;  ///< Newton iterations (implicit_rk, radau5, the SDIRK pairs)
     step_count accepted_steps = 0;     ///< steps that stand
     step_count rejected_steps = 0;     ///< attempts rejected by an error-controlled engine
     step_count firings = 0;            ///< event firings
@@ -43,10 +44,12 @@ struct counts {
 
 namespace detail {
 
-// Evaluations counted one by one, by a counting_system around the caller's system.
+// Evaluations counted one by one, by a counting_system around the caller's system, and the Newton iterations
+// a fixed-step implicit stepper reports through it (count_newton_iteration).
 struct evaluation_tally {
     step_count rhs = 0;
     step_count jacobian = 0;
+    step_count newton = 0;
 };
 
 // The caller's system with every call counted: called as the system is called (either form, first order or
@@ -73,6 +76,15 @@ counting_system<F> counting(F& f, evaluation_tally& tally) noexcept {
     return counting_system<F>{f, tally};
 }
 
+// One Newton iteration of a fixed-step implicit stepper (implicit_rk), counted when the loop gave it a
+// counting_system; on any other system nothing (a step called directly costs no counter).
+template <class F>
+constexpr void count_newton_iteration(const F&) noexcept {}
+template <class F>
+constexpr void count_newton_iteration(const counting_system<F>& f) noexcept {
+    ++f.tally.newton;
+}
+
 // A stepper whose every step call makes exactly rhs_evals_per_step evaluations (trait exact_rhs_evals): its
 // loops derive the count (calls x rhs_evals_per_step) and leave f uncounted, at no cost per step.
 template <class S, class = void>
@@ -90,11 +102,13 @@ struct has_implicit_work<S, std::void_t<decltype(S::jacobians_per_step), decltyp
 
 // The Jacobians and factorizations of `calls` step calls of a fixed-step stepper that publishes
 // jacobians_per_step and factorizations_per_step (implicit_rk, rosenbrock): each call forms them, the system's
-// own Jacobian (own_jacobian: counted by the tally) or one by differences.
+// own Jacobian (own_jacobian: counted by the tally) or one by differences; the Newton iterations the tally
+// was told of.
 template <class Stepper>
 void add_implicit_work(counts& c, step_count calls, const evaluation_tally& tally, bool own_jacobian) noexcept {
     using S = std::remove_cv_t<std::remove_reference_t<Stepper>>;
     c.jacobian_evals = tally.jacobian;
+    c.newton_iterations = tally.newton;
     if constexpr (has_implicit_work<S>::value) {
         if (!own_jacobian) c.jacobian_evals = calls * static_cast<step_count>(S::jacobians_per_step);
         c.factorizations = calls * static_cast<step_count>(S::factorizations_per_step);

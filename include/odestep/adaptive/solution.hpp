@@ -192,7 +192,14 @@ public:
     /// Non-finite t0 or t1: every advance_to returns status::invalid_time.
     adaptive_sampler(const engine_type& engine, T t0, const State& y0, T t1,
                      step_count max_attempts = default_max_attempts) noexcept
-        : engine_(engine), t0_(t0), t1_(t1), t_(t0), last_out_(t0), y_(y0), max_attempts_(max_attempts) {}
+        : engine_(engine),
+          start_(detail::engine_counts(engine)),
+          t0_(t0),
+          t1_(t1),
+          t_(t0),
+          last_out_(t0),
+          y_(y0),
+          max_attempts_(max_attempts) {}
 
     /// The state at t_out into y_out (see the class).
     template <class System>
@@ -204,6 +211,7 @@ public:
         const auto before = [forward](T a, T b) { return forward ? a < b : a > b; };
         if (before(t_out, last_out_) || before(t1_, t_out)) return status::invalid_time;
         last_out_ = t_out;
+        auto counted = detail::counting(f, tally_);
         for (step_count n = 0;; ++n) {
             if (t_out == t_) {  // the run's own state: t0, or a step's end
                 // Only y0 can be non-finite here (a step's end always is finite): as integrate()'s empty run.
@@ -212,7 +220,7 @@ public:
                 return status::ok;
             }
             if (has_step_ && !before(t_out, dense_.t_start()) && before(t_out, t_)) {
-                s = dense_.complete(f, engine_);
+                s = dense_.complete(counted, engine_);
                 if (s != status::ok) return s;
                 State u;
                 dense_.at(t_out, u);
@@ -223,7 +231,7 @@ public:
             }
             if (n == max_attempts_) return status::substep_limit;
             bool accepted = false;
-            s = engine_.attempt(f, t_, y_, t1_, accepted, dense_);
+            s = engine_.attempt(counted, t_, y_, t1_, accepted, dense_);
             if (s != status::ok) return s;
             if (accepted) {
                 has_step_ = true;
@@ -242,9 +250,15 @@ public:
     step_count max_attempts() const noexcept { return max_attempts_; }
     /// The engine (its settings, step size and counts).
     const engine_type& engine() const noexcept { return engine_; }
+    /// What the run did since construction, over every advance_to call (odestep::counts): the evaluations of
+    /// f (the first step's estimate, the attempts, the interpolants' extra stages), the accepted and rejected
+    /// steps. A caller who wants one call's counts subtracts two readings.
+    odestep::counts counts() const noexcept { return detail::engine_work(engine_, start_, tally_); }
 
 private:
     engine_type engine_;
+    odestep::counts start_;             // the engine's counts when the run began (its copy's history)
+    detail::evaluation_tally tally_{};  // f over every advance_to
     dense_step<Method, State> dense_{};
     T t0_;
     T t1_;

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <type_traits>
 
+#include "../counts.hpp"
 #include "../detail/ops.hpp"
 #include "../linalg/jacobian.hpp"
 #include "../linalg/lu.hpp"
@@ -304,6 +305,7 @@ private:
                 for (std::size_t n = 0; n < N; ++n) dz[n] = v[n] + hg * fz[n] - z[n];
                 linalg::lu_solve(m, piv, dz);
                 for (std::size_t n = 0; n < N; ++n) z[n] += dz[n];
+                detail::count_newton_iteration(f);
                 const status s = judge(monitor, dz, weights, done);
                 if (s != status::ok) return s;
             }
@@ -358,6 +360,7 @@ private:
                 }
             linalg::lu_solve(m, piv, dz);
             for (std::size_t q = 0; q < M; ++q) z[q] += dz[q];
+            detail::count_newton_iteration(f);
             const status s = judge(monitor, dz, weights, done);
             if (s != status::ok) return s;
         }
