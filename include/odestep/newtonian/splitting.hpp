@@ -82,9 +82,10 @@ struct splitting_cache<State, true> {
 /// A step of a symplectic splitting method for x'' = a(t, x) from the table `Method::table<T>`, with
 /// position and velocity as two states, advanced in place.
 ///
-/// The sequence of drifts and kicks is unrolled at compile time: a zero coefficient emits nothing. The
-/// force must be of position alone, `State a(T t, const State& x)` (a velocity-dependent force does not
-/// compile): only then is each kick an exact, symplectic flow.
+/// The sequence of drifts and kicks is unrolled at compile time: a zero coefficient emits nothing. With a
+/// force of position alone, `State a(T t, const State& x)`, each kick is an exact flow and the method
+/// symplectic; a velocity-dependent force `a(t, x, v)` is accepted too (velocity_forces), each kick then
+/// using the velocity at hand: no longer symplectic and, but for Euler-Cromer, first order.
 ///
 /// First same as last (velocity Verlet, leapfrog, Blanes-Moan): the acceleration of a step's last kick,
 /// a(t + dt, x_{n+1}), is kept with that time and the address of the x it belongs to, and serves as the
