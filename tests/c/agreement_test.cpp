@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "agree.hpp"
 #include "odestep/events/events.hpp"
 #include "odestep/integrate.hpp"
 #include "odestep/multistep/adams.hpp"
@@ -17,15 +18,7 @@
 
 namespace {
 
-int failures = 0;
-
-void check(bool ok, const char* what, int line) {
-    if (!ok) {
-        std::printf("agreement_test.cpp:%d: %s\n", line, what);
-        ++failures;
-    }
-}
-#define AGREE(condition) check((condition), #condition, __LINE__)
+using agree::failures;
 
 // The status values agree at compile time in the library itself (src/capi.cpp), so that no build of
 // odestep_c can have them differ.

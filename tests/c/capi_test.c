@@ -859,16 +859,9 @@ static void test_counts(void) {
         CHECK(run.counts.accepted_steps == run.steps && run.steps == 20);
         CHECK(run.counts.rejected_steps == 0 && run.counts.jacobian_evals == 0 && run.counts.factorizations == 0);
         CHECK(run.counts.newton_iterations == 0 && run.counts.event_evals == 0 && run.counts.firings == 0);
-    }
-    {
-        uint64_t calls = 0;
-        const odestep_system_d sys = {counted_decay_d, &calls, 1};
-        odestep_stepper_d s;
-        double y = 1.0;
-        odestep_run_d run;
-        CHECK(odestep_stepper_init_d(&s, &odestep_rk4_d) == ODESTEP_OK);
-        CHECK(odestep_integrate_d(&s, &sys, &y, 0.0, 1.0, 0.05, NULL, NULL, &run) == ODESTEP_OK);
-        CHECK(calls == 80); /* RK4: 4 evaluations a step, 20 steps */
+        if (m == 0u) {
+            CHECK(calls == 80u); /* RK4: 4 evaluations a step, 20 steps */
+        }
     }
     {
         uint64_t calls = 0;

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "agree.hpp"
 #include "odestep/adaptive/adaptive_rk.hpp"
 #include "odestep/odestep.h"
 #include "odestep/rk/implicit_rk.hpp"
@@ -21,15 +22,7 @@
 
 namespace {
 
-int failures = 0;
-
-void check(bool ok, const char* what, int line) {
-    if (!ok) {
-        std::printf("stiff_agreement_test.cpp:%d: %s\n", line, what);
-        ++failures;
-    }
-}
-#define AGREE(condition) check((condition), #condition, __LINE__)
+using agree::failures;
 
 // Van der Pol with mu = 10 (mildly stiff, nonlinear, a non-symmetric Jacobian), as C and as C++.
 constexpr double mu = 10.0;

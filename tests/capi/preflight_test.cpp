@@ -4,10 +4,8 @@
 // whole number of steps, and the grid's bad arguments, are refused before f is evaluated or the observer
 // called. Expected statuses: odestep.h's documentation of odestep_integrate_d (step_mismatch for a shortened
 // last step of a uniform-step method; invalid_step, invalid_time, wrong_direction for a bad grid).
-// Compiled with ODESTEP_C_EXACT_STATES 2, as tests/capi/single_step_test.cpp (the same definitions in one
-// program).
-#define ODESTEP_C_EXACT_STATES 2
-#include "../../src/capi_impl.hpp"
+// Compiled with ODESTEP_C_EXACT_STATES 2, as tests/capi/single_step_test.cpp (methods.hpp).
+#include "methods.hpp"
 
 #include <doctest/doctest.h>
 
@@ -19,16 +17,8 @@ namespace {
 
 namespace capi = odestep::capi;
 
-struct ab4_preflight_family {
-    template <class S>
-    using type = odestep::adams_bashforth4<S>;
-};
-struct verlet_preflight_family {
-    template <class S>
-    using type = odestep::velocity_verlet<S>;
-};
-const odestep_method_d ab4_preflight{capi::make_ops<double, ab4_preflight_family>("ab4")};
-const odestep_method_d verlet_preflight{capi::make_ops<double, verlet_preflight_family>("velocity_verlet")};
+using capi_test::ab4_method;
+using capi_test::verlet_method;
 
 struct counts {
     std::size_t f = 0;
@@ -52,7 +42,7 @@ TEST_CASE("C API preflight: a uniform-step method's shortened last step is refus
     counts n;
     const odestep_system_d sys{decay, &n, 1};
     odestep_stepper_d s;
-    REQUIRE(capi::init<double>(&s, &ab4_preflight) == ODESTEP_OK);
+    REQUIRE(capi::init<double>(&s, &ab4_method) == ODESTEP_OK);
     double y[1] = {1.0};
     odestep_run_d run{};
     CHECK(capi::integrate<double>(&s, &sys, y, 0.0, 1.0, 0.3, watch, &n, &run) == ODESTEP_STEP_MISMATCH);
@@ -77,7 +67,7 @@ TEST_CASE("C API preflight: Newton's loop refuses a bad grid before a or the obs
     counts n;
     const odestep_newton_d sys{spring, &n, 1};
     odestep_stepper_d s;
-    REQUIRE(capi::init<double>(&s, &verlet_preflight) == ODESTEP_OK);
+    REQUIRE(capi::init<double>(&s, &verlet_method) == ODESTEP_OK);
     double x[1] = {1.0};
     double v[1] = {0.0};
     CHECK(capi::integrate_newton<double>(&s, &sys, x, v, 0.0, 1.0, 0.0, watch_xv, &n, nullptr) == ODESTEP_INVALID_STEP);

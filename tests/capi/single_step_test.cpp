@@ -6,8 +6,7 @@
 // n starts afresh, the bound one continues, a loop's history goes on in single steps, and every status of
 // the header on a bound stepper, with the caller's state untouched. (The library's own tests, tests/c/,
 // run the default build, where every n up to 8 is exact.)
-#define ODESTEP_C_EXACT_STATES 2
-#include "../../src/capi_impl.hpp"
+#include "methods.hpp"
 
 #include <doctest/doctest.h>
 
@@ -24,21 +23,9 @@ namespace {
 
 namespace capi = odestep::capi;
 
-struct rk4_family {
-    template <class S>
-    using type = odestep::rk4<S>;
-};
-struct ab4_family {
-    template <class S>
-    using type = odestep::adams_bashforth4<S>;
-};
-struct verlet_family {
-    template <class S>
-    using type = odestep::velocity_verlet<S>;
-};
-const odestep_method_d rk4_method{capi::make_ops<double, rk4_family>("rk4")};
-const odestep_method_d ab4_method{capi::make_ops<double, ab4_family>("ab4")};
-const odestep_method_d verlet_method{capi::make_ops<double, verlet_family>("velocity_verlet")};
+using capi_test::ab4_method;
+using capi_test::rk4_method;
+using capi_test::verlet_method;
 
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 constexpr double infinite = std::numeric_limits<double>::infinity();
