@@ -45,20 +45,32 @@ constexpr bool matrix_finite(const sensitivity_matrix<T, R, C>& m) noexcept {
     return true;
 }
 
-// to = a b (a: R x L, b: L x C).
+// to = a b (a: R x L, b: L x C). A zero a_il skips its row of b: a Jacobian's structural zeros (a
+// kinematic identity block, a banded coupling) cost one compare each instead of C multiply-adds.
 template <class T, std::size_t R, std::size_t L, std::size_t C>
 constexpr void multiply(const sensitivity_matrix<T, R, L>& a, const sensitivity_matrix<T, L, C>& b,
                         sensitivity_matrix<T, R, C>& to) noexcept {
     for (std::size_t i = 0; i < R; ++i) {
-        ODESTEP_UNROLL_UNLESS_SIZE
-        for (std::size_t j = 0; j < C; ++j) to[i][j] = a[i][0] * b[0][j];
-        for (std::size_t l = 1; l < L; ++l) {
+        std::array<T, C> row{};
+        for (std::size_t l = 0; l < L; ++l) {
             const T ail = a[i][l];
+            if (ail == T(0)) continue;
             ODESTEP_UNROLL_UNLESS_SIZE
-            for (std::size_t j = 0; j < C; ++j) to[i][j] += ail * b[l][j];
+            for (std::size_t j = 0; j < C; ++j) row[j] += ail * b[l][j];
         }
+        to[i] = row;
     }
 }
+
+// True when the system computes J z itself (odestep::system_with_dual_jacobian's jacobian_times).
+template <class System, class T, std::size_t N, std::size_t M, class = void>
+struct has_jacobian_times : std::false_type {};
+template <class System, class T, std::size_t N, std::size_t M>
+struct has_jacobian_times<System, T, N, M,
+                          std::void_t<decltype(std::declval<System&>().jacobian_times(
+                              std::declval<T>(), std::declval<const std::array<T, N>&>(),
+                              std::declval<const sensitivity_matrix<T, N, M>&>(),
+                              std::declval<sensitivity_matrix<T, N, M>&>()))>> : std::true_type {};
 
 // to += c m.
 template <class T, std::size_t R, std::size_t C>
@@ -66,6 +78,15 @@ constexpr void add_scaled(sensitivity_matrix<T, R, C>& to, T c, const sensitivit
     for (std::size_t i = 0; i < R; ++i) {
         ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t j = 0; j < C; ++j) to[i][j] += c * m[i][j];
+    }
+}
+
+// to = c m.
+template <class T, std::size_t R, std::size_t C>
+constexpr void scale(sensitivity_matrix<T, R, C>& to, T c, const sensitivity_matrix<T, R, C>& m) noexcept {
+    for (std::size_t i = 0; i < R; ++i) {
+        ODESTEP_UNROLL_UNLESS_SIZE
+        for (std::size_t j = 0; j < C; ++j) to[i][j] = c * m[i][j];
     }
 }
 
@@ -132,11 +153,7 @@ struct rk_tangent_listener {
     // dydt = f(t, y), and the derivative of the stage whose input y is.
     void operator()(T t, const State& y, State& dydt) {
         evaluate(f, t, y, dydt);
-        if (calls < plan::evaluated) {
-            jacobian_t<State> jac;
-            evaluate_jacobian(f, t, y, jac);
-            differentiate(plan::order[calls], jac);
-        }
+        if (calls < plan::evaluated) differentiate(plan::order[calls], t, y);
         ++calls;
     }
 
@@ -149,28 +166,47 @@ struct rk_tangent_listener {
     }
     static constexpr std::array<bool, S> reads = reading_stages();
 
-    // K_i = J_i Z_i, Z_i = S + dt sum_{j<i} a_ij K_j. One loop over the table's row, not one body per stage:
-    // the plain step may be flattened (ODESTEP_STEP_FLATTEN) with this listener inlined at each of its S
-    // evaluations, and S bodies per evaluation would make S^2 of them.
-    void differentiate(std::size_t i, const jacobian_t<State>& jac) {
+    // K_i = J_i Z_i, Z_i = S + dt sum_{j<i} a_ij K_j, with J_i = J(t, y) at the stage's input. One loop over
+    // the table's row, not one body per stage: the plain step may be flattened (ODESTEP_STEP_FLATTEN) with
+    // this listener inlined at each of its S evaluations, and S bodies per evaluation would make S^2 of them.
+    // A system that forms J z itself (dual numbers seeded with z) gets Z_i and no N x N J is formed.
+    void differentiate(std::size_t i, T t, const State& y) {
         if constexpr (Identity) {
             static_assert(M == N, "odestep: an identity seed is square");
             if (!reads[i]) {
-                k[i] = jac;  // K_i = J_i I
+                evaluate_jacobian(f, t, y, k[i]);  // K_i = J_i I
                 return;
             }
         }
         block z;
         if constexpr (Identity) {
-            set_identity(z);
+            // Z_i = I + dt sum_j a_ij K_j: the first term written, not added to a zeroed identity.
+            bool first = true;
+            for (std::size_t j = 0; j < i; ++j) {
+                const T a = plan::tab.a[i][j];
+                if (a == T(0)) continue;
+                if (first) {
+                    scale(z, dt * a, k[j]);
+                    first = false;
+                } else {
+                    add_scaled(z, dt * a, k[j]);
+                }
+            }
+            for (std::size_t d = 0; d < N; ++d) z[d][d] += T(1);
         } else {
             z = seed;
+            for (std::size_t j = 0; j < i; ++j) {
+                const T a = plan::tab.a[i][j];
+                if (a != T(0)) add_scaled(z, dt * a, k[j]);
+            }
         }
-        for (std::size_t j = 0; j < i; ++j) {
-            const T a = plan::tab.a[i][j];
-            if (a != T(0)) add_scaled(z, dt * a, k[j]);
+        if constexpr (has_jacobian_times<System, T, N, M>::value) {
+            f.jacobian_times(t, y, static_cast<const block&>(z), k[i]);
+        } else {
+            jacobian_t<State> jac;
+            evaluate_jacobian(f, t, y, jac);
+            multiply(jac, z, k[i]);
         }
-        multiply(jac, z, k[i]);
     }
 };
 
@@ -248,14 +284,9 @@ private:
         State next = y;
         const status s = stepper_type{}.step(listener, next, t, dt);
         if (s != status::ok) return s;
-        // Phi S = S + dt sum_i b_i K_i
+        // Phi S = S + dt sum_i b_i K_i, one pass over the entries.
         sensitivity_matrix<T, N, M> d;
-        if constexpr (Identity) {
-            detail::set_identity(d);
-        } else {
-            d = seed;
-        }
-        add_weighted(d, k, dt, std::make_index_sequence<plan::S>{});
+        add_weighted<M, Identity>(d, seed, k, dt, std::make_index_sequence<plan::S>{});
         if constexpr (Check::checks_finiteness) {
             if (!detail::matrix_finite(d)) return status::non_finite;
         }
@@ -263,10 +294,22 @@ private:
         out = d;
         return status::ok;
     }
-    template <std::size_t M, std::size_t... I>
-    static void add_weighted(sensitivity_matrix<T, N, M>& d, const std::array<sensitivity_matrix<T, N, M>, plan::S>& k,
-                             T dt, std::index_sequence<I...>) {
-        (((plan::tab.b[I] != T(0)) ? detail::add_scaled(d, dt * plan::tab.b[I], k[I]) : void()), ...);
+    // d = S + dt sum_i b_i K_i (S = I when Identity): the stages with b_i = 0 are not read (nor evaluated).
+    template <std::size_t M, bool Identity, std::size_t... I>
+    static void add_weighted(sensitivity_matrix<T, N, M>& d, const sensitivity_matrix<T, N, M>& seed,
+                             const std::array<sensitivity_matrix<T, N, M>, plan::S>& k, T dt,
+                             std::index_sequence<I...>) {
+        const std::array<T, plan::S> w{(dt * plan::tab.b[I])...};
+        for (std::size_t r = 0; r < N; ++r)
+            for (std::size_t c = 0; c < M; ++c) {
+                T sum = T(0);
+                (((plan::tab.b[I] != T(0)) ? void(sum += w[I] * k[I][r][c]) : void()), ...);
+                if constexpr (Identity) {
+                    d[r][c] = (r == c ? T(1) : T(0)) + sum;
+                } else {
+                    d[r][c] = seed[r][c] + sum;
+                }
+            }
     }
 };
 
