@@ -62,6 +62,14 @@ constexpr void multiply(const sensitivity_matrix<T, R, L>& a, const sensitivity_
     }
 }
 
+// The transitions' one requirement on the system: its Jacobian.
+template <class System, class State>
+constexpr void require_jacobian() noexcept {
+    static_assert(has_jacobian_v<System, State>,
+                  "odestep: the step's derivative needs the system's Jacobian: odestep::with_jacobian(f, J), or "
+                  "odestep::with_dual_jacobian(f) for an f written as a template");
+}
+
 // True when the system computes J z itself (odestep::system_with_dual_jacobian's jacobian_times).
 template <class System, class T, std::size_t N, std::size_t M, class = void>
 struct has_jacobian_times : std::false_type {};
@@ -275,9 +283,7 @@ private:
     static status advance(System& f, State& y, const sensitivity_matrix<T, N, M>& seed,
                           sensitivity_matrix<T, N, M>& out, T t, T dt) {
         using system_type = std::remove_reference_t<System>;
-        static_assert(has_jacobian_v<system_type, State>,
-                      "odestep: the step's derivative needs the system's Jacobian: odestep::with_jacobian(f, J), or "
-                      "odestep::with_dual_jacobian(f) for an f written as a template");
+        detail::require_jacobian<system_type, State>();
         using listener_type = detail::rk_tangent_listener<Method, State, M, Identity, system_type>;
         std::array<typename listener_type::block, plan::S> k;  // not zeroed: only evaluated stages are read
         listener_type listener{f, seed, dt, k};
