@@ -349,7 +349,61 @@ struct kick_listener {
     }
 };
 
+// The same for a force a(t, x, v): each kick's evaluation at (X_m, V_m) also evaluates da/dx and da/dv there
+// (a.jacobian(t, x, v, dadx, dadv)); the kick's derivative is then V' += h (A_m X' + B_m V').
+template <class State, std::size_t Kicks, class Accel>
+struct velocity_kick_listener {
+    using T = value_type_t<State>;
+    Accel& a;
+    std::array<jacobian_t<State>, Kicks>& dadx;
+    std::array<jacobian_t<State>, Kicks>& dadv;
+    std::size_t calls = 0;
+
+    State operator()(T t, const State& x, const State& v) {
+        const State acc = acceleration(a, t, x, v);
+        if (calls < Kicks) a.jacobian(t, x, v, dadx[calls], dadv[calls]);
+        ++calls;
+        return acc;
+    }
+};
+
 }  // namespace detail
+
+/// \brief A force a(t, x, v) with its two Jacobians, as one object: made by odestep::with_velocity_jacobian
+/// for odestep::splitting_transition.
+template <class A, class J>
+struct velocity_force_with_jacobian {
+    A a;    ///< the force, State a(t, x, v) or a(t, x, v, a_out)
+    J jac;  ///< its Jacobians, jac(t, x, v, dadx, dadv)
+
+    /// a(t, x, v) (when a returns the acceleration).
+    template <class T, class State>
+    constexpr auto operator()(T t, const State& x, const State& v) -> decltype(std::declval<A&>()(t, x, v)) {
+        return a(t, x, v);
+    }
+    /// a(t, x, v, a_out) (when a writes it).
+    template <class T, class State>
+    constexpr auto operator()(T t, const State& x, const State& v, State& out)
+        -> decltype(std::declval<A&>()(t, x, v, out)) {
+        return a(t, x, v, out);
+    }
+    /// dadx = da/dx and dadv = da/dv at (t, x, v), both zeroed before jac writes them.
+    template <class T, class State>
+    void jacobian(T t, const State& x, const State& v, jacobian_t<State>& dadx, jacobian_t<State>& dadv) {
+        dadx = {};
+        dadv = {};
+        jac(t, x, v, dadx, dadv);
+    }
+};
+
+/// Pairs a force of position and velocity a(t, x, v) with its Jacobians, `jac(T t, const State& x, const
+/// State& v, jacobian_t<State>& dadx, jacobian_t<State>& dadv)` writing dadx[i][j] = d a_i / d x_j and
+/// dadv[i][j] = d a_i / d v_j (both zeroed before the call). A callable given as an lvalue is held by
+/// reference, one given as an rvalue is moved in.
+template <class A, class J>
+constexpr velocity_force_with_jacobian<A, J> with_velocity_jacobian(A&& a, J&& jac) {
+    return {std::forward<A>(a), std::forward<J>(jac)};
+}
 
 /// \brief A step of a splitting method for x'' = a(t, x) (velocity Verlet, Forest-Ruth, Yoshida, ... any
 /// table of odestep::tables' splitting tables) that also returns its derivative,
@@ -362,7 +416,11 @@ struct kick_listener {
 /// (a force with a potential), so Phi^T J Phi = J to round-off.
 ///
 /// The acceleration must carry its Jacobian da/dx (odestep::with_jacobian(a, J), or
-/// odestep::with_dual_jacobian(a)) and be a force of position alone, a(t, x). Nothing is kept between steps:
+/// odestep::with_dual_jacobian(a)) for a force of position alone, a(t, x). A force of position and velocity,
+/// a(t, x, v) (which the splitting stepper evaluates at each kick with the velocity before it), carries both
+/// Jacobians, odestep::with_velocity_jacobian(a, J); a kick is then [[I, 0], [h A_m, I + h B_m]],
+/// B_m = da/dv at the kick, and the step is neither symplectic nor, but for Euler-Cromer, above first
+/// order (the plain stepper's traits say so). Nothing is kept between steps:
 /// a first-same-as-last method (velocity Verlet) evaluates its first kick afresh, so each step costs one
 /// evaluation of a and of da/dx per kick (velocity Verlet: 2 and 2).
 ///
@@ -408,17 +466,24 @@ private:
     static status advance(Accel& a, State& x, State& v, const sensitivity_matrix<T, 2 * N, M>& seed,
                           sensitivity_matrix<T, 2 * N, M>& out, T t, T dt) {
         using accel_type = std::remove_reference_t<Accel>;
-        static_assert(is_position_force_v<accel_type, State>,
-                      "odestep: the splitting transition needs a force of position alone, a(t, x)");
-        static_assert(has_jacobian_v<accel_type, State>,
+        constexpr bool velocity = is_velocity_force_v<accel_type, State>;
+        static_assert(velocity || has_jacobian_v<accel_type, State>,
                       "odestep: the step's derivative needs the acceleration's Jacobian da/dx: "
-                      "odestep::with_jacobian(a, J), or odestep::with_dual_jacobian(a) for an a written as a template");
+                      "odestep::with_jacobian(a, J), or odestep::with_dual_jacobian(a) for an a written as a "
+                      "template; for a force a(t, x, v), odestep::with_velocity_jacobian(a, J)");
         std::array<jacobian_t<State>, kicks> dadx;
-        detail::kick_listener<State, kicks, accel_type> listener{a, dadx};
+        std::array<jacobian_t<State>, velocity ? kicks : 0> dadv;
         State nx = x;
         State nv = v;
         stepper_type stepper;  // fresh: nothing kept, every kick evaluated (and heard)
-        const status s = stepper.step(listener, nx, nv, t, dt);
+        status s;
+        if constexpr (velocity) {
+            detail::velocity_kick_listener<State, kicks, accel_type> listener{a, dadx, dadv};
+            s = stepper.step(listener, nx, nv, t, dt);
+        } else {
+            detail::kick_listener<State, kicks, accel_type> listener{a, dadx};
+            s = stepper.step(listener, nx, nv, t, dt);
+        }
         if (s != status::ok) return s;
         // X' and V': the x rows and the v rows of Phi S.
         sensitivity_matrix<T, N, M> dx;
@@ -442,8 +507,14 @@ private:
                 detail::add_scaled(dx, h, dv);  // drift: X' += h V'
             } else {
                 sensitivity_matrix<T, N, M> ax;
-                detail::multiply(dadx[m++], dx, ax);
-                detail::add_scaled(dv, h, ax);  // kick: V' += h A_m X'
+                detail::multiply(dadx[m], dx, ax);
+                if constexpr (velocity) {
+                    sensitivity_matrix<T, N, M> bv;
+                    detail::multiply(dadv[m], dv, bv);
+                    detail::add_scaled(ax, T(1), bv);  // A_m X' + B_m V'
+                }
+                ++m;
+                detail::add_scaled(dv, h, ax);  // kick: V' += h (A_m X' + B_m V')
             }
         }
         if constexpr (Check::checks_finiteness) {
