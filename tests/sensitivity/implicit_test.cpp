@@ -198,7 +198,10 @@ TEST_CASE("implicit transitions: on a stiff y' = A y, Phi is the published Pade 
     }
 }
 
-TEST_CASE("implicit transitions: in float, Radau IIA 5's Phi on y' = A y is R(hA) to float round-off") {
+// A float transition's Phi on the stiff y' = A y (stiff_a) at h = 0.1 against R(hA) in double from the
+// method's stability function r, to float round-off (the transition compiles without a double promotion).
+template <class Transition, class R>
+void check_float_on_stiff_linear(R r) {
     using statef = std::array<float, 2>;
     auto sys = odestep::with_jacobian(
         [](float, const statef& y) {
@@ -209,12 +212,16 @@ TEST_CASE("implicit transitions: in float, Radau IIA 5's Phi on y' = A y is R(hA
         });
     statef y{1.0f, -2.0f};
     mat<float, 2> phi{};
-    REQUIRE(odestep::radau_iia5_transition<statef>{}.step(sys, y, phi, 0.0f, 0.1f) == odestep::status::ok);
-    const mat<double, 2> expected = stability_matrix(radau5_r, stiff_a, static_cast<double>(0.1f));
+    REQUIRE(Transition{}.step(sys, y, phi, 0.0f, 0.1f) == odestep::status::ok);
+    const mat<double, 2> expected = stability_matrix(r, stiff_a, static_cast<double>(0.1f));
     for (std::size_t i = 0; i < 2; ++i)
         for (std::size_t j = 0; j < 2; ++j)
             CHECK(std::fabs(static_cast<double>(phi[i][j]) - expected[i][j]) <=
                   64 * static_cast<double>(std::numeric_limits<float>::epsilon()) * max_entry(expected));
+}
+
+TEST_CASE("implicit transitions: in float, Radau IIA 5's Phi on y' = A y is R(hA) to float round-off") {
+    check_float_on_stiff_linear<odestep::radau_iia5_transition<std::array<float, 2>>>(radau5_r);
 }
 
 // Phi against central differences of the plain step, e^2 convergence over a sweep (sensitivity_test). A fixed
@@ -322,22 +329,7 @@ TEST_CASE("rosenbrock transition: on a stiff y' = A y, RODAS3's Phi is R(hA)") {
               64 * eps * max_entry(expected));
     }
     // In float (the transition compiles without a double promotion), to float round-off.
-    using statef = std::array<float, 2>;
-    auto sys = odestep::with_jacobian(
-        [](float, const statef& y) {
-            return statef{-1000.0f * y[0] + 3.0f * y[1], 2.0f * y[0] - 0.5f * y[1]};
-        },
-        [](float, const statef&, mat<float, 2>& J) {
-            J = {{{-1000.0f, 3.0f}, {2.0f, -0.5f}}};
-        });
-    statef y{1.0f, -2.0f};
-    mat<float, 2> phi{};
-    REQUIRE(odestep::rodas3_transition<statef>{}.step(sys, y, phi, 0.0f, 0.1f) == odestep::status::ok);
-    const mat<double, 2> expected = stability_matrix(rodas3_r, stiff_a, static_cast<double>(0.1f));
-    for (std::size_t i = 0; i < 2; ++i)
-        for (std::size_t j = 0; j < 2; ++j)
-            CHECK(std::fabs(static_cast<double>(phi[i][j]) - expected[i][j]) <=
-                  64 * static_cast<double>(std::numeric_limits<float>::epsilon()) * max_entry(expected));
+    check_float_on_stiff_linear<odestep::rodas3_transition<std::array<float, 2>>>(rodas3_r);
 }
 
 // A Duffing oscillator with a time-dependent stiffness, so that J depends on t and the step's df/dt on y.

@@ -66,22 +66,27 @@ dense<N> make_dense() {
 
 constexpr double dt = 0.01;
 
-template <class F, std::size_t N>
+// Table: odestep::tables::rk4 or odestep::tables::dormand_prince54 (its 5th-order step, no estimate).
+template <class Table, class F, std::size_t N>
 [[gnu::noinline]] void plain(const F& f, std::array<double, N>& y) {
-    if (odestep::rk4<std::array<double, N>>{}.step(f, y, 0.0, dt) != odestep::status::ok) y[0] = 0.0;
+    if (odestep::explicit_rk<Table, std::array<double, N>>{}.step(f, y, 0.0, dt) != odestep::status::ok) y[0] = 0.0;
 }
-template <class F, std::size_t N>
+template <class Table, class F, std::size_t N>
 [[gnu::noinline]] void phi_hand(F& sys, std::array<double, N>& y, odestep::jacobian_t<std::array<double, N>>& phi) {
-    if (odestep::rk4_transition<std::array<double, N>>{}.step(sys, y, phi, 0.0, dt) != odestep::status::ok) y[0] = 0.0;
+    if (odestep::explicit_rk_transition<Table, std::array<double, N>>{}.step(sys, y, phi, 0.0, dt) !=
+        odestep::status::ok)
+        y[0] = 0.0;
 }
-template <class F, std::size_t N>
+template <class Table, class F, std::size_t N>
 [[gnu::noinline]] void phi_dual(F& sys, std::array<double, N>& y, odestep::jacobian_t<std::array<double, N>>& phi) {
-    if (odestep::rk4_transition<std::array<double, N>>{}.step(sys, y, phi, 0.0, dt) != odestep::status::ok) y[0] = 0.0;
+    if (odestep::explicit_rk_transition<Table, std::array<double, N>>{}.step(sys, y, phi, 0.0, dt) !=
+        odestep::status::ok)
+        y[0] = 0.0;
 }
-template <class F, std::size_t N>
+template <class Table, class F, std::size_t N>
 [[gnu::noinline]] void phi_differences(const F& f, std::array<double, N>& y,
                                        odestep::jacobian_t<std::array<double, N>>& phi) {
-    const odestep::rk4<std::array<double, N>> rk4;
+    const odestep::explicit_rk<Table, std::array<double, N>> rk4;
     std::array<double, N> base = y;
     if (rk4.step(f, base, 0.0, dt) != odestep::status::ok) return;
     for (std::size_t j = 0; j < N; ++j) {
@@ -96,7 +101,7 @@ template <class F, std::size_t N>
 
 constexpr int reps = 1000;
 
-template <std::size_t N>
+template <class Table, std::size_t N>
 double run_lorenz96() {
     lorenz96<N> f;
     auto hand = odestep::with_jacobian(f, lorenz96_jacobian<N>{});
@@ -107,18 +112,18 @@ double run_lorenz96() {
     double sum = 0.0;
     for (int r = 0; r < reps; ++r) {
         std::array<double, N> a = y, b = y, c = y, d = y;
-        plain(f, a);
-        phi_hand(hand, b, phi);
+        plain<Table>(f, a);
+        phi_hand<Table>(hand, b, phi);
         sum += phi[0][0];
-        phi_dual(dual, c, phi);
+        phi_dual<Table>(dual, c, phi);
         sum += phi[0][0];
-        phi_differences(f, d, phi);
+        phi_differences<Table>(f, d, phi);
         sum += phi[0][0] + a[0] + b[0] + c[0] + d[0];
     }
     return sum;
 }
 
-template <std::size_t N>
+template <class Table, std::size_t N>
 double run_dense() {
     const dense<N> f = make_dense<N>();
     auto hand = odestep::with_jacobian(
@@ -130,12 +135,12 @@ double run_dense() {
     double sum = 0.0;
     for (int r = 0; r < reps; ++r) {
         std::array<double, N> a = y, b = y, c = y, d = y;
-        plain(f, a);
-        phi_hand(hand, b, phi);
+        plain<Table>(f, a);
+        phi_hand<Table>(hand, b, phi);
         sum += phi[0][0];
-        phi_dual(dual, c, phi);
+        phi_dual<Table>(dual, c, phi);
         sum += phi[0][0];
-        phi_differences(f, d, phi);
+        phi_differences<Table>(f, d, phi);
         sum += phi[0][0] + a[0] + b[0] + c[0] + d[0];
     }
     return sum;
@@ -326,10 +331,19 @@ double run_stiff_dense() {
 
 }  // namespace
 
+template <class Table>
+double run_explicit() {
+    return run_lorenz96<Table, 2>() + run_lorenz96<Table, 4>() + run_lorenz96<Table, 8>() + run_lorenz96<Table, 16>() +
+           run_dense<Table, 2>() + run_dense<Table, 4>() + run_dense<Table, 8>() + run_dense<Table, 16>();
+}
+
+
+// -DSENS_EXPLICIT_ONLY: only RK4, DP 5(4) and velocity Verlet (a quicker run).
 int main() {
-    double s = run_lorenz96<2>() + run_lorenz96<4>() + run_lorenz96<8>() + run_lorenz96<16>() + run_dense<2>() +
-               run_dense<4>() + run_dense<8>() + run_dense<16>() + run_chain<1>() + run_chain<2>() + run_chain<4>() +
-               run_chain<8>();
+    double s = run_explicit<odestep::tables::rk4>() + run_explicit<odestep::tables::dormand_prince54>() +
+               run_chain<1>() + run_chain<2>() + run_chain<4>() + run_chain<8>();
+#ifndef SENS_EXPLICIT_ONLY
+
     s += run_stiff_lorenz96<be_kind, 2>() + run_stiff_lorenz96<be_kind, 4>() + run_stiff_lorenz96<be_kind, 8>() +
          run_stiff_lorenz96<be_kind, 16>() + run_stiff_dense<be_kind, 2>() + run_stiff_dense<be_kind, 4>() +
          run_stiff_dense<be_kind, 8>() + run_stiff_dense<be_kind, 16>();
@@ -339,6 +353,7 @@ int main() {
     s += run_stiff_lorenz96<rodas3_kind, 2>() + run_stiff_lorenz96<rodas3_kind, 4>() +
          run_stiff_lorenz96<rodas3_kind, 8>() + run_stiff_dense<rodas3_kind, 2>() + run_stiff_dense<rodas3_kind, 4>() +
          run_stiff_dense<rodas3_kind, 8>();
+#endif
     std::printf("%g\n", s);
     return 0;
 }

@@ -469,3 +469,115 @@ TEST_CASE("splitting transition: a NaN in da/dx is non_finite with x, v and Phi 
 }
 
 }  // namespace
+
+// ---- a force of position and velocity, a(t, x, v)
+
+TEST_CASE("splitting transition: velocity Verlet with a damped force a = -w^2 x - c v is K D K to round-off") {
+    // The splitting evaluates a(t, x, v) at each kick with the velocity before it, so kick by h/2:
+    // v <- v + h/2 (-w^2 x - c v), K = [[1, 0], [-h w^2 / 2, 1 - h c / 2]]; drift by h: D = [[1, h], [0, 1]];
+    // Phi = K D K (the method written out, HLW Sec. I.5 with the damping in the kicks).
+    using state = std::array<double, 1>;
+    const double w2 = 4.0;
+    const double c = 0.6;
+    const double h = 0.3;
+    auto a = odestep::with_velocity_jacobian(
+        [w2, c](double, const state& x, const state& v) { return state{-w2 * x[0] - c * v[0]}; },
+        [w2, c](double, const state&, const state&, mat<double, 1>& ax, mat<double, 1>& av) {
+            ax[0][0] = -w2;
+            av[0][0] = -c;
+        });
+    state x{0.7};
+    state v{-0.2};
+    odestep::phase_matrix_t<state> phi{};
+    REQUIRE(odestep::velocity_verlet_transition<state>{}.step(a, x, v, phi, 0.0, h) == odestep::status::ok);
+    state px{0.7};
+    state pv{-0.2};
+    odestep::velocity_verlet<state> plain;
+    REQUIRE(plain.step(a, px, pv, 0.0, h) == odestep::status::ok);
+    CHECK(same_bits(px, x));
+    CHECK(same_bits(pv, v));
+    const mat<double, 2> k{{{1.0, 0.0}, {-h * w2 / 2, 1 - h * c / 2}}};
+    const mat<double, 2> d{{{1.0, h}, {0.0, 1.0}}};
+    const mat<double, 2> expected = product(k, product(d, k));
+    CHECK(max_difference(phi, expected) <= 4 * std::numeric_limits<double>::epsilon());
+    // Not symplectic: det Phi = (1 - h c / 2)^2, not 1.
+    CHECK(std::fabs(phi[0][0] * phi[1][1] - phi[0][1] * phi[1][0] - (1 - h * c / 2) * (1 - h * c / 2)) < 1e-15);
+}
+
+namespace {
+// A nonlinear force of position and velocity in 2-D, and its Jacobians by hand.
+struct dragged {
+    template <class T>
+    std::array<T, 2> operator()(T, const std::array<T, 2>& x, const std::array<T, 2>& v) const {
+        return {-std::sin(x[0]) - T(0.2) * v[0] * v[0] * v[0] + T(0.1) * v[1],
+                -x[1] * x[1] * x[1] - T(0.4) * v[1] + T(0.2) * x[0] * v[0]};
+    }
+};
+struct dragged_jacobian {
+    template <class T>
+    void operator()(T, const std::array<T, 2>& x, const std::array<T, 2>& v, mat<T, 2>& ax, mat<T, 2>& av) const {
+        ax = {{{-std::cos(x[0]), T(0)}, {T(0.2) * v[0], T(-3) * x[1] * x[1]}}};
+        av = {{{T(-0.6) * v[0] * v[0], T(0.1)}, {T(0.2) * x[0], T(-0.4)}}};
+    }
+};
+// Central differences of one plain splitting step in (x, v).
+template <class Method>
+mat<double, 4> splitting_difference(const std::array<double, 2>& x, const std::array<double, 2>& v, double h,
+                                    double e) {
+    mat<double, 4> out{};
+    for (std::size_t j = 0; j < 4; ++j) {
+        std::array<std::array<double, 2>, 2> p{x, v};
+        std::array<std::array<double, 2>, 2> m{x, v};
+        p[j / 2][j % 2] += e;
+        m[j / 2][j % 2] -= e;
+        REQUIRE(odestep::splitting<Method, std::array<double, 2>>{}.step(dragged{}, p[0], p[1], 0.0, h) ==
+                odestep::status::ok);
+        REQUIRE(odestep::splitting<Method, std::array<double, 2>>{}.step(dragged{}, m[0], m[1], 0.0, h) ==
+                odestep::status::ok);
+        for (std::size_t i = 0; i < 4; ++i) out[i][j] = (p[i / 2][i % 2] - m[i / 2][i % 2]) / (2 * e);
+    }
+    return out;
+}
+template <class Method>
+void check_velocity_force(double h) {
+    using state = std::array<double, 2>;
+    const state x0{0.8, -0.5};
+    const state v0{0.3, 0.9};
+    state x = x0;
+    state v = v0;
+    odestep::phase_matrix_t<state> phi{};
+    REQUIRE(odestep::splitting_transition<Method, state>{}.step(
+                odestep::with_velocity_jacobian(dragged{}, dragged_jacobian{}), x, v, phi, 0.0, h) ==
+            odestep::status::ok);
+    // The error of the differences falls as e^2 over the sweep (ratios 3 to 5 per halving).
+    double e = 1e-2;
+    double previous = max_difference(splitting_difference<Method>(x0, v0, h, e), phi);
+    for (int halving = 0; halving < 3; ++halving) {
+        e /= 2;
+        const double error = max_difference(splitting_difference<Method>(x0, v0, h, e), phi);
+        INFO("e = " << e << ", error " << error << ", previous " << previous);
+        CHECK(previous / error > 3.0);
+        CHECK(previous / error < 5.0);
+        previous = error;
+    }
+}
+}  // namespace
+
+TEST_CASE("splitting transition: with a(t, x, v) Phi matches central differences to O(eps^2)") {
+    SUBCASE("velocity Verlet") { check_velocity_force<odestep::tables::velocity_verlet>(0.2); }
+    SUBCASE("Forest-Ruth") { check_velocity_force<odestep::tables::forest_ruth>(0.2); }
+}
+
+TEST_CASE("splitting transition: a NaN in da/dv is non_finite with x, v and Phi untouched") {
+    using state = std::array<double, 2>;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    auto bad = odestep::with_velocity_jacobian(
+        dragged{}, [nan](double, const state&, const state&, mat<double, 2>&, mat<double, 2>& av) { av[1][0] = nan; });
+    state x{0.8, -0.5};
+    state v{0.3, 0.9};
+    mat<double, 4> phi = identity<double, 4>();
+    CHECK(odestep::velocity_verlet_transition<state>{}.step(bad, x, v, phi, 0.0, 0.1) == odestep::status::non_finite);
+    CHECK(same_bits(x, state{0.8, -0.5}));
+    CHECK(same_bits(v, state{0.3, 0.9}));
+    CHECK(max_difference(phi, identity<double, 4>()) == 0.0);
+}

@@ -53,17 +53,15 @@ struct dual {
     friend constexpr dual operator+(const dual& a) noexcept { return a; }
     /// -a
     friend constexpr dual operator-(const dual& a) noexcept {
-        dual r;
-        r.value = -a.value;
-        for (std::size_t k = 0; k < K; ++k) r.grad[k] = -a.grad[k];
+        dual r = a;
+        r.value = -r.value;
+        for (std::size_t k = 0; k < K; ++k) r.grad[k] = -r.grad[k];
         return r;
     }
     /// a + b
     friend constexpr dual operator+(const dual& a, const dual& b) noexcept {
-        dual r;
-        r.value = a.value + b.value;
-        for (std::size_t k = 0; k < K; ++k) r.grad[k] = a.grad[k] + b.grad[k];
-        return r;
+        dual r = a;
+        return r += b;
     }
     /// a + c
     friend constexpr dual operator+(const dual& a, T c) noexcept {
@@ -75,10 +73,8 @@ struct dual {
     friend constexpr dual operator+(T c, const dual& a) noexcept { return a + c; }
     /// a - b
     friend constexpr dual operator-(const dual& a, const dual& b) noexcept {
-        dual r;
-        r.value = a.value - b.value;
-        for (std::size_t k = 0; k < K; ++k) r.grad[k] = a.grad[k] - b.grad[k];
-        return r;
+        dual r = a;
+        return r -= b;
     }
     /// a - c
     friend constexpr dual operator-(const dual& a, T c) noexcept {
@@ -94,49 +90,67 @@ struct dual {
     }
     /// a b: d(ab) = a db + b da
     friend constexpr dual operator*(const dual& a, const dual& b) noexcept {
-        dual r;
-        r.value = a.value * b.value;
-        for (std::size_t k = 0; k < K; ++k) r.grad[k] = a.value * b.grad[k] + b.value * a.grad[k];
-        return r;
+        dual r = a;
+        return r *= b;
     }
     /// a c
     friend constexpr dual operator*(const dual& a, T c) noexcept {
-        dual r;
-        r.value = a.value * c;
-        for (std::size_t k = 0; k < K; ++k) r.grad[k] = a.grad[k] * c;
+        dual r = a;
+        r.value *= c;
+        for (std::size_t k = 0; k < K; ++k) r.grad[k] *= c;
         return r;
     }
     /// c a
     friend constexpr dual operator*(T c, const dual& a) noexcept { return a * c; }
     /// a / b: d(a/b) = (da - (a/b) db) / b
     friend constexpr dual operator/(const dual& a, const dual& b) noexcept {
-        dual r;
-        r.value = a.value / b.value;
-        for (std::size_t k = 0; k < K; ++k) r.grad[k] = (a.grad[k] - r.value * b.grad[k]) / b.value;
-        return r;
+        dual r = a;
+        return r /= b;
     }
     /// a / c
     friend constexpr dual operator/(const dual& a, T c) noexcept {
-        dual r;
-        r.value = a.value / c;
-        for (std::size_t k = 0; k < K; ++k) r.grad[k] = a.grad[k] / c;
+        dual r = a;
+        r.value /= c;
+        for (std::size_t k = 0; k < K; ++k) r.grad[k] /= c;
         return r;
     }
     /// c / a: d(c/a) = -(c/a) da / a
     friend constexpr dual operator/(T c, const dual& a) noexcept {
-        dual r;
+        dual r = a;
         r.value = c / a.value;
-        for (std::size_t k = 0; k < K; ++k) r.grad[k] = -r.value * a.grad[k] / a.value;
+        for (std::size_t k = 0; k < K; ++k) r.grad[k] = -r.value * r.grad[k] / a.value;
         return r;
     }
+    // The operations work in place on a copy of an operand: a result built from `dual r;` would zero its K
+    // derivatives first (the member initializer) only to overwrite them, K stores per operation.
     /// a += b
-    constexpr dual& operator+=(const dual& b) noexcept { return *this = *this + b; }
+    constexpr dual& operator+=(const dual& b) noexcept {
+        value += b.value;
+        for (std::size_t k = 0; k < K; ++k) grad[k] += b.grad[k];
+        return *this;
+    }
     /// a -= b
-    constexpr dual& operator-=(const dual& b) noexcept { return *this = *this - b; }
-    /// a *= b
-    constexpr dual& operator*=(const dual& b) noexcept { return *this = *this * b; }
-    /// a /= b
-    constexpr dual& operator/=(const dual& b) noexcept { return *this = *this / b; }
+    constexpr dual& operator-=(const dual& b) noexcept {
+        value -= b.value;
+        for (std::size_t k = 0; k < K; ++k) grad[k] -= b.grad[k];
+        return *this;
+    }
+    /// a *= b: d(ab) = a db + b da
+    constexpr dual& operator*=(const dual& b) noexcept {
+        const T a0 = value;
+        const T b0 = b.value;  // b may be *this
+        for (std::size_t k = 0; k < K; ++k) grad[k] = a0 * b.grad[k] + b0 * grad[k];
+        value = a0 * b0;
+        return *this;
+    }
+    /// a /= b: d(a/b) = (da - (a/b) db) / b
+    constexpr dual& operator/=(const dual& b) noexcept {
+        const T b0 = b.value;  // b may be *this
+        const T q = value / b0;
+        for (std::size_t k = 0; k < K; ++k) grad[k] = (grad[k] - q * b.grad[k]) / b0;
+        value = q;
+        return *this;
+    }
 
     // Comparisons compare values (a branch on a value is piecewise: its derivative is the branch taken's).
     /// a == b (values)
@@ -157,9 +171,9 @@ namespace detail {
 // f(a) with derivative df/da: value f, every partial derivative scaled by df/da (the chain rule).
 template <class T, std::size_t K>
 constexpr dual<T, K> chain(const dual<T, K>& a, T f, T dfda) noexcept {
-    dual<T, K> r;
+    dual<T, K> r = a;
     r.value = f;
-    for (std::size_t k = 0; k < K; ++k) r.grad[k] = dfda * a.grad[k];
+    for (std::size_t k = 0; k < K; ++k) r.grad[k] *= dfda;
     return r;
 }
 }  // namespace detail
@@ -278,6 +292,21 @@ struct system_with_dual_jacobian {
     template <class T, std::size_t N>
     void jacobian(T t, const std::array<T, N>& y, jacobian_t<std::array<T, N>>& dfdy) {
         dual_jacobian(f, t, y, dfdy);
+    }
+    /// jz = (d f / d y) z at (t, y) for an N x M matrix z: one evaluation of f in dual<T, M> whose
+    /// derivative parts are z's rows (the directional derivatives of f along z's columns), with no N x N
+    /// Jacobian and no product formed. What the explicit transitions read for a stage's K = J Z.
+    template <class T, std::size_t N, std::size_t M>
+    void jacobian_times(T t, const std::array<T, N>& y, const std::array<std::array<T, M>, N>& z,
+                        std::array<std::array<T, M>, N>& jz) {
+        using d = dual<T, M>;
+        std::array<d, N> yd;
+        for (std::size_t j = 0; j < N; ++j) {
+            yd[j].value = y[j];
+            yd[j].grad = z[j];
+        }
+        const std::array<d, N> fd = detail::evaluate_dual(f, t, static_cast<const std::array<d, N>&>(yd));
+        for (std::size_t i = 0; i < N; ++i) jz[i] = fd[i].grad;
     }
 };
 

@@ -145,9 +145,7 @@ private:
     template <std::size_t M, bool Identity, class System>
     status advance(System& f, State& y, sensitivity_matrix<T, N, M>& s, T t, T dt) const {
         using system_type = std::remove_reference_t<System>;
-        static_assert(has_jacobian_v<system_type, State>,
-                      "odestep: the step's derivative needs the system's Jacobian: odestep::with_jacobian(f, J), or "
-                      "odestep::with_dual_jacobian(f) for an f written as a template");
+        detail::require_jacobian<system_type, State>();
         std::array<State, S> input;  // every stage is evaluated at least once by a step that returns ok
         detail::implicit_stage_listener<Method, State, system_type> listener{f, y, input};
         State next = y;

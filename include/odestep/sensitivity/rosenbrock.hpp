@@ -151,9 +151,7 @@ private:
     static status advance(System& f, State& y, const sensitivity_matrix<T, N, M>& seed,
                           sensitivity_matrix<T, N, M>& out, T t, T dt) {
         using system_type = std::remove_reference_t<System>;
-        static_assert(has_jacobian_v<system_type, State>,
-                      "odestep: the step's derivative needs the system's Jacobian: odestep::with_jacobian(f, J), or "
-                      "odestep::with_dual_jacobian(f) for an f written as a template");
+        detail::require_jacobian<system_type, State>();
         using block = sensitivity_matrix<T, N, M>;
         std::array<State, S> input;
         std::array<State, S> value;

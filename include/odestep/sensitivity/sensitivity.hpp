@@ -4,6 +4,7 @@
 #ifndef ODESTEP_SENSITIVITY_SENSITIVITY_HPP
 #define ODESTEP_SENSITIVITY_SENSITIVITY_HPP
 
+#include "boris.hpp"
 #include "dual.hpp"
 #include "implicit.hpp"
 #include "rosenbrock.hpp"

@@ -45,20 +45,40 @@ constexpr bool matrix_finite(const sensitivity_matrix<T, R, C>& m) noexcept {
     return true;
 }
 
-// to = a b (a: R x L, b: L x C).
+// to = a b (a: R x L, b: L x C). A zero a_il skips its row of b: a Jacobian's structural zeros (a
+// kinematic identity block, a banded coupling) cost one compare each instead of C multiply-adds.
 template <class T, std::size_t R, std::size_t L, std::size_t C>
 constexpr void multiply(const sensitivity_matrix<T, R, L>& a, const sensitivity_matrix<T, L, C>& b,
                         sensitivity_matrix<T, R, C>& to) noexcept {
     for (std::size_t i = 0; i < R; ++i) {
-        ODESTEP_UNROLL_UNLESS_SIZE
-        for (std::size_t j = 0; j < C; ++j) to[i][j] = a[i][0] * b[0][j];
-        for (std::size_t l = 1; l < L; ++l) {
+        std::array<T, C> row{};
+        for (std::size_t l = 0; l < L; ++l) {
             const T ail = a[i][l];
+            if (ail == T(0)) continue;
             ODESTEP_UNROLL_UNLESS_SIZE
-            for (std::size_t j = 0; j < C; ++j) to[i][j] += ail * b[l][j];
+            for (std::size_t j = 0; j < C; ++j) row[j] += ail * b[l][j];
         }
+        to[i] = row;
     }
 }
+
+// The transitions' one requirement on the system: its Jacobian.
+template <class System, class State>
+constexpr void require_jacobian() noexcept {
+    static_assert(has_jacobian_v<System, State>,
+                  "odestep: the step's derivative needs the system's Jacobian: odestep::with_jacobian(f, J), or "
+                  "odestep::with_dual_jacobian(f) for an f written as a template");
+}
+
+// True when the system computes J z itself (odestep::system_with_dual_jacobian's jacobian_times).
+template <class System, class T, std::size_t N, std::size_t M, class = void>
+struct has_jacobian_times : std::false_type {};
+template <class System, class T, std::size_t N, std::size_t M>
+struct has_jacobian_times<System, T, N, M,
+                          std::void_t<decltype(std::declval<System&>().jacobian_times(
+                              std::declval<T>(), std::declval<const std::array<T, N>&>(),
+                              std::declval<const sensitivity_matrix<T, N, M>&>(),
+                              std::declval<sensitivity_matrix<T, N, M>&>()))>> : std::true_type {};
 
 // to += c m.
 template <class T, std::size_t R, std::size_t C>
@@ -66,6 +86,15 @@ constexpr void add_scaled(sensitivity_matrix<T, R, C>& to, T c, const sensitivit
     for (std::size_t i = 0; i < R; ++i) {
         ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t j = 0; j < C; ++j) to[i][j] += c * m[i][j];
+    }
+}
+
+// to = c m.
+template <class T, std::size_t R, std::size_t C>
+constexpr void scale(sensitivity_matrix<T, R, C>& to, T c, const sensitivity_matrix<T, R, C>& m) noexcept {
+    for (std::size_t i = 0; i < R; ++i) {
+        ODESTEP_UNROLL_UNLESS_SIZE
+        for (std::size_t j = 0; j < C; ++j) to[i][j] = c * m[i][j];
     }
 }
 
@@ -132,11 +161,7 @@ struct rk_tangent_listener {
     // dydt = f(t, y), and the derivative of the stage whose input y is.
     void operator()(T t, const State& y, State& dydt) {
         evaluate(f, t, y, dydt);
-        if (calls < plan::evaluated) {
-            jacobian_t<State> jac;
-            evaluate_jacobian(f, t, y, jac);
-            differentiate(plan::order[calls], jac);
-        }
+        if (calls < plan::evaluated) differentiate(plan::order[calls], t, y);
         ++calls;
     }
 
@@ -149,28 +174,47 @@ struct rk_tangent_listener {
     }
     static constexpr std::array<bool, S> reads = reading_stages();
 
-    // K_i = J_i Z_i, Z_i = S + dt sum_{j<i} a_ij K_j. One loop over the table's row, not one body per stage:
-    // the plain step may be flattened (ODESTEP_STEP_FLATTEN) with this listener inlined at each of its S
-    // evaluations, and S bodies per evaluation would make S^2 of them.
-    void differentiate(std::size_t i, const jacobian_t<State>& jac) {
+    // K_i = J_i Z_i, Z_i = S + dt sum_{j<i} a_ij K_j, with J_i = J(t, y) at the stage's input. One loop over
+    // the table's row, not one body per stage: the plain step may be flattened (ODESTEP_STEP_FLATTEN) with
+    // this listener inlined at each of its S evaluations, and S bodies per evaluation would make S^2 of them.
+    // A system that forms J z itself (dual numbers seeded with z) gets Z_i and no N x N J is formed.
+    void differentiate(std::size_t i, T t, const State& y) {
         if constexpr (Identity) {
             static_assert(M == N, "odestep: an identity seed is square");
             if (!reads[i]) {
-                k[i] = jac;  // K_i = J_i I
+                evaluate_jacobian(f, t, y, k[i]);  // K_i = J_i I
                 return;
             }
         }
         block z;
         if constexpr (Identity) {
-            set_identity(z);
+            // Z_i = I + dt sum_j a_ij K_j: the first term written, not added to a zeroed identity.
+            bool first = true;
+            for (std::size_t j = 0; j < i; ++j) {
+                const T a = plan::tab.a[i][j];
+                if (a == T(0)) continue;
+                if (first) {
+                    scale(z, dt * a, k[j]);
+                    first = false;
+                } else {
+                    add_scaled(z, dt * a, k[j]);
+                }
+            }
+            for (std::size_t d = 0; d < N; ++d) z[d][d] += T(1);
         } else {
             z = seed;
+            for (std::size_t j = 0; j < i; ++j) {
+                const T a = plan::tab.a[i][j];
+                if (a != T(0)) add_scaled(z, dt * a, k[j]);
+            }
         }
-        for (std::size_t j = 0; j < i; ++j) {
-            const T a = plan::tab.a[i][j];
-            if (a != T(0)) add_scaled(z, dt * a, k[j]);
+        if constexpr (has_jacobian_times<System, T, N, M>::value) {
+            f.jacobian_times(t, y, static_cast<const block&>(z), k[i]);
+        } else {
+            jacobian_t<State> jac;
+            evaluate_jacobian(f, t, y, jac);
+            multiply(jac, z, k[i]);
         }
-        multiply(jac, z, k[i]);
     }
 };
 
@@ -239,23 +283,16 @@ private:
     static status advance(System& f, State& y, const sensitivity_matrix<T, N, M>& seed,
                           sensitivity_matrix<T, N, M>& out, T t, T dt) {
         using system_type = std::remove_reference_t<System>;
-        static_assert(has_jacobian_v<system_type, State>,
-                      "odestep: the step's derivative needs the system's Jacobian: odestep::with_jacobian(f, J), or "
-                      "odestep::with_dual_jacobian(f) for an f written as a template");
+        detail::require_jacobian<system_type, State>();
         using listener_type = detail::rk_tangent_listener<Method, State, M, Identity, system_type>;
         std::array<typename listener_type::block, plan::S> k;  // not zeroed: only evaluated stages are read
         listener_type listener{f, seed, dt, k};
         State next = y;
         const status s = stepper_type{}.step(listener, next, t, dt);
         if (s != status::ok) return s;
-        // Phi S = S + dt sum_i b_i K_i
+        // Phi S = S + dt sum_i b_i K_i, one pass over the entries.
         sensitivity_matrix<T, N, M> d;
-        if constexpr (Identity) {
-            detail::set_identity(d);
-        } else {
-            d = seed;
-        }
-        add_weighted(d, k, dt, std::make_index_sequence<plan::S>{});
+        add_weighted<M, Identity>(d, seed, k, dt, std::make_index_sequence<plan::S>{});
         if constexpr (Check::checks_finiteness) {
             if (!detail::matrix_finite(d)) return status::non_finite;
         }
@@ -263,10 +300,22 @@ private:
         out = d;
         return status::ok;
     }
-    template <std::size_t M, std::size_t... I>
-    static void add_weighted(sensitivity_matrix<T, N, M>& d, const std::array<sensitivity_matrix<T, N, M>, plan::S>& k,
-                             T dt, std::index_sequence<I...>) {
-        (((plan::tab.b[I] != T(0)) ? detail::add_scaled(d, dt * plan::tab.b[I], k[I]) : void()), ...);
+    // d = S + dt sum_i b_i K_i (S = I when Identity): the stages with b_i = 0 are not read (nor evaluated).
+    template <std::size_t M, bool Identity, std::size_t... I>
+    static void add_weighted(sensitivity_matrix<T, N, M>& d, const sensitivity_matrix<T, N, M>& seed,
+                             const std::array<sensitivity_matrix<T, N, M>, plan::S>& k, T dt,
+                             std::index_sequence<I...>) {
+        const std::array<T, plan::S> w{(dt * plan::tab.b[I])...};
+        for (std::size_t r = 0; r < N; ++r)
+            for (std::size_t c = 0; c < M; ++c) {
+                T sum = T(0);
+                (((plan::tab.b[I] != T(0)) ? void(sum += w[I] * k[I][r][c]) : void()), ...);
+                if constexpr (Identity) {
+                    d[r][c] = (r == c ? T(1) : T(0)) + sum;
+                } else {
+                    d[r][c] = seed[r][c] + sum;
+                }
+            }
     }
 };
 
@@ -300,7 +349,61 @@ struct kick_listener {
     }
 };
 
+// The same for a force a(t, x, v): each kick's evaluation at (X_m, V_m) also evaluates da/dx and da/dv there
+// (a.jacobian(t, x, v, dadx, dadv)); the kick's derivative is then V' += h (A_m X' + B_m V').
+template <class State, std::size_t Kicks, class Accel>
+struct velocity_kick_listener {
+    using T = value_type_t<State>;
+    Accel& a;
+    std::array<jacobian_t<State>, Kicks>& dadx;
+    std::array<jacobian_t<State>, Kicks>& dadv;
+    std::size_t calls = 0;
+
+    State operator()(T t, const State& x, const State& v) {
+        const State acc = acceleration(a, t, x, v);
+        if (calls < Kicks) a.jacobian(t, x, v, dadx[calls], dadv[calls]);
+        ++calls;
+        return acc;
+    }
+};
+
 }  // namespace detail
+
+/// \brief A force a(t, x, v) with its two Jacobians, as one object: made by odestep::with_velocity_jacobian
+/// for odestep::splitting_transition.
+template <class A, class J>
+struct velocity_force_with_jacobian {
+    A a;    ///< the force, State a(t, x, v) or a(t, x, v, a_out)
+    J jac;  ///< its Jacobians, jac(t, x, v, dadx, dadv)
+
+    /// a(t, x, v) (when a returns the acceleration).
+    template <class T, class State>
+    constexpr auto operator()(T t, const State& x, const State& v) -> decltype(std::declval<A&>()(t, x, v)) {
+        return a(t, x, v);
+    }
+    /// a(t, x, v, a_out) (when a writes it).
+    template <class T, class State>
+    constexpr auto operator()(T t, const State& x, const State& v, State& out)
+        -> decltype(std::declval<A&>()(t, x, v, out)) {
+        return a(t, x, v, out);
+    }
+    /// dadx = da/dx and dadv = da/dv at (t, x, v), both zeroed before jac writes them.
+    template <class T, class State>
+    void jacobian(T t, const State& x, const State& v, jacobian_t<State>& dadx, jacobian_t<State>& dadv) {
+        dadx = {};
+        dadv = {};
+        jac(t, x, v, dadx, dadv);
+    }
+};
+
+/// Pairs a force of position and velocity a(t, x, v) with its Jacobians, `jac(T t, const State& x, const
+/// State& v, jacobian_t<State>& dadx, jacobian_t<State>& dadv)` writing dadx[i][j] = d a_i / d x_j and
+/// dadv[i][j] = d a_i / d v_j (both zeroed before the call). A callable given as an lvalue is held by
+/// reference, one given as an rvalue is moved in.
+template <class A, class J>
+constexpr velocity_force_with_jacobian<A, J> with_velocity_jacobian(A&& a, J&& jac) {
+    return {std::forward<A>(a), std::forward<J>(jac)};
+}
 
 /// \brief A step of a splitting method for x'' = a(t, x) (velocity Verlet, Forest-Ruth, Yoshida, ... any
 /// table of odestep::tables' splitting tables) that also returns its derivative,
@@ -313,7 +416,11 @@ struct kick_listener {
 /// (a force with a potential), so Phi^T J Phi = J to round-off.
 ///
 /// The acceleration must carry its Jacobian da/dx (odestep::with_jacobian(a, J), or
-/// odestep::with_dual_jacobian(a)) and be a force of position alone, a(t, x). Nothing is kept between steps:
+/// odestep::with_dual_jacobian(a)) for a force of position alone, a(t, x). A force of position and velocity,
+/// a(t, x, v) (which the splitting stepper evaluates at each kick with the velocity before it), carries both
+/// Jacobians, odestep::with_velocity_jacobian(a, J); a kick is then [[I, 0], [h A_m, I + h B_m]],
+/// B_m = da/dv at the kick, and the step is neither symplectic nor, but for Euler-Cromer, above first
+/// order (the plain stepper's traits say so). Nothing is kept between steps:
 /// a first-same-as-last method (velocity Verlet) evaluates its first kick afresh, so each step costs one
 /// evaluation of a and of da/dx per kick (velocity Verlet: 2 and 2).
 ///
@@ -359,17 +466,24 @@ private:
     static status advance(Accel& a, State& x, State& v, const sensitivity_matrix<T, 2 * N, M>& seed,
                           sensitivity_matrix<T, 2 * N, M>& out, T t, T dt) {
         using accel_type = std::remove_reference_t<Accel>;
-        static_assert(is_position_force_v<accel_type, State>,
-                      "odestep: the splitting transition needs a force of position alone, a(t, x)");
-        static_assert(has_jacobian_v<accel_type, State>,
+        constexpr bool velocity = is_velocity_force_v<accel_type, State>;
+        static_assert(velocity || has_jacobian_v<accel_type, State>,
                       "odestep: the step's derivative needs the acceleration's Jacobian da/dx: "
-                      "odestep::with_jacobian(a, J), or odestep::with_dual_jacobian(a) for an a written as a template");
+                      "odestep::with_jacobian(a, J), or odestep::with_dual_jacobian(a) for an a written as a "
+                      "template; for a force a(t, x, v), odestep::with_velocity_jacobian(a, J)");
         std::array<jacobian_t<State>, kicks> dadx;
-        detail::kick_listener<State, kicks, accel_type> listener{a, dadx};
+        std::array<jacobian_t<State>, velocity ? kicks : 0> dadv;
         State nx = x;
         State nv = v;
         stepper_type stepper;  // fresh: nothing kept, every kick evaluated (and heard)
-        const status s = stepper.step(listener, nx, nv, t, dt);
+        status s;
+        if constexpr (velocity) {
+            detail::velocity_kick_listener<State, kicks, accel_type> listener{a, dadx, dadv};
+            s = stepper.step(listener, nx, nv, t, dt);
+        } else {
+            detail::kick_listener<State, kicks, accel_type> listener{a, dadx};
+            s = stepper.step(listener, nx, nv, t, dt);
+        }
         if (s != status::ok) return s;
         // X' and V': the x rows and the v rows of Phi S.
         sensitivity_matrix<T, N, M> dx;
@@ -393,8 +507,14 @@ private:
                 detail::add_scaled(dx, h, dv);  // drift: X' += h V'
             } else {
                 sensitivity_matrix<T, N, M> ax;
-                detail::multiply(dadx[m++], dx, ax);
-                detail::add_scaled(dv, h, ax);  // kick: V' += h A_m X'
+                detail::multiply(dadx[m], dx, ax);
+                if constexpr (velocity) {
+                    sensitivity_matrix<T, N, M> bv;
+                    detail::multiply(dadv[m], dv, bv);
+                    detail::add_scaled(ax, T(1), bv);  // A_m X' + B_m V'
+                }
+                ++m;
+                detail::add_scaled(dv, h, ax);  // kick: V' += h (A_m X' + B_m V')
             }
         }
         if constexpr (Check::checks_finiteness) {
