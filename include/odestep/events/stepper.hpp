@@ -156,7 +156,7 @@ public:
     }
 
     /// The time of the state: t0 + reached() dt, or the time a tick stopped at.
-    constexpr value_type time() const noexcept { return t_now_; }
+    constexpr value_type time() const noexcept { return off_grid_ ? t_now_ : clock_.time(n_); }
     /// Periods counted: the calls of tick since start that did not return an error.
     constexpr std::uint64_t ticks() const noexcept { return n_ + lag_; }
     /// The last grid time the state reached is t0 + reached() dt: ticks(), or one less after a tick that
@@ -184,23 +184,22 @@ private:
         const std::array<state_type*, arity> ptrs{&y...};
         if (ODESTEP_UNLIKELY(clock_state_ != clock_state::on_grid)) return catch_up(f, ptrs);
         tick_result<T, Capacity> r;  // firings past `fired` stay unwritten: clearing them cost most of a quiet tick
-        r.status = status::ok;
-        r.t = t_now_;
         r.fired = 0;
         r.event = no_event;
-        // The time of the state (t_now_) is the last tick's end; the tick's end is converted from the counter
-        // after the step (on the grid nothing is kept across the step's call).
+        // On the grid the times are the counter's, t0 + n dt, converted where they are used (nothing stores
+        // them: a step and events that do not read t, and a caller who does not read r.t, convert nothing).
+        const T t_s = clock_.time(n_);
         typename engine_type::pack start;
-        r.status = engine_type::step(stepper_, f, ptrs, t_now_, clock_.dt, start);
+        r.status = engine_type::step(stepper_, f, ptrs, t_s, clock_.dt, start);
         if (ODESTEP_UNLIKELY(r.status != status::ok)) {
             ++work_.quiet_failed;
-            return r;  // y untouched, at t_now_
+            r.t = t_s;
+            return r;  // y untouched, at t_s
         }
         const T t_end = grid_time();  // finite: an unbounded clock never takes this path (see start)
         typename engine_type::values g;
-        if (ODESTEP_UNLIKELY(!engine_.settle_armed(set_, ptrs, t_end, g))) return rest(f, ptrs, start, g, t_end);
+        if (ODESTEP_UNLIKELY(!engine_.settle_armed(set_, ptrs, t_end, g))) return rest(f, ptrs, start, g);
         ++n_;
-        t_now_ = t_end;
         r.t = t_end;
         return r;
     }
@@ -221,15 +220,16 @@ private:
     // (ptrs and g by value: in registers where they fit, instead of spilled to the quiet tick's frame.)
     ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> rest(System& f, const ptrs_type ptrs,
                                                           typename engine_type::pack& start,
-                                                          const typename engine_type::values g, T t_end) {
+                                                          const typename engine_type::values g) {
         ++work_.rested;
+        const T t_end = grid_time();  // (converted again here: the quiet tick keeps nothing for this path)
         tick_result<T, Capacity> r;
         r.status = status::ok;
-        r.t = t_now_;
+        r.t = time();
         r.fired = 0;
         r.event = no_event;
         const std::uint64_t target = n_ + 1;
-        finish_piece(f, ptrs, start, g, t_now_, clock_.dt, t_end, r);
+        finish_piece(f, ptrs, start, g, time(), clock_.dt, t_end, r);
         account(r, target);
         return r;
     }
@@ -240,7 +240,7 @@ private:
     ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> catch_up(System& f, const ptrs_type& ptrs) {
         tick_result<T, Capacity> r;
         r.status = status::ok;
-        r.t = t_now_;
+        r.t = time();
         r.fired = 0;
         r.event = no_event;
         if (clock_state_ == clock_state::idle) {
@@ -265,7 +265,7 @@ private:
             }
             const bool partial = off_grid_;
             typename engine_type::pack start;
-            const status s = engine_type::step(stepper_, f, ptrs, t_now_, h, start);
+            const status s = engine_type::step(stepper_, f, ptrs, time(), h, start);
             ++work_.off_steps;
             if (s != status::ok) {
                 r.status = s;
@@ -279,12 +279,12 @@ private:
                 t_now_ = t_end;
                 off_grid_ = false;
             } else {
-                finish_piece(f, ptrs, start, g, t_now_, h, t_end, r);
+                finish_piece(f, ptrs, start, g, time(), h, t_end, r);
             }
             // A partial step (from where a tick stopped back to the grid) does not fit a multistep history.
             if (partial) detail::reset_if_any(stepper_);
         }
-        r.t = t_now_;
+        r.t = time();
         account(r, target);
         return r;
     }
@@ -339,7 +339,7 @@ private:
     Set set_;
     engine_type engine_{};
     detail::grid_clock<value_type> clock_{};
-    value_type t_now_ = value_type(0);  // the time of the state: t0 + n dt, or where a tick stopped
+    value_type t_now_ = value_type(0);  // the time of the state off the grid, where a tick stopped (on it: time())
     std::uint64_t n_ = 0;    // the last grid time reached; 64 bits on every target (a 32-bit count of 1 kHz ticks
                              // wraps after 49.7 days)
     std::uint64_t lag_ = 0;  // periods counted beyond n_ (after ticks that ended early)
