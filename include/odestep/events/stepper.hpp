@@ -21,6 +21,17 @@
 #include "engine.hpp"
 #include "event.hpp"
 
+/// The per-tick event loop's quiet tick (event_stepper::tick with an explicit or Newtonian stepper) inlines
+/// every call in it, the step's and the right-hand side's included (GCC's and Clang's flatten), as the loop
+/// written out by hand does. Define it empty to keep the step a call (less flash, more instructions).
+#ifndef ODESTEP_EVENTS_TICK_FLATTEN
+#if defined(__GNUC__) || defined(__clang__)
+#define ODESTEP_EVENTS_TICK_FLATTEN [[gnu::flatten]] inline
+#else
+#define ODESTEP_EVENTS_TICK_FLATTEN inline
+#endif
+#endif
+
 namespace odestep {
 
 /// The event loop for a control loop, one `tick` per period of a timer: the clock is t0 + n dt on an
@@ -129,7 +140,7 @@ public:
     [[nodiscard]] ODESTEP_INLINE tick_result<value_type, Capacity> tick(System&& f, States&... y) {
         static_assert(sizeof...(States) == arity, "odestep: tick(f, y) (Newtonian: tick(a, x, v))");
         if constexpr (detail::exact_rhs_evals_v<Stepper>) {
-            return tick_on(f, y...);  // f's evaluations derived from the step calls (see counts())
+            return tick_flat(f, y...);  // f's evaluations derived from the step calls (see counts())
         } else {
             auto counted = detail::counting(f, tally_);
             return tick_on(counted, y...);
@@ -178,6 +189,16 @@ private:
     using T = value_type;
     using engine_type = detail::event_engine<state_type, arity, Set>;
     using ptrs_type = std::array<state_type*, arity>;
+
+    // The quiet tick with every call in it inlined (the step, f, every g), as the loop written out by hand:
+    // GCC at -O2 otherwise calls the step out of line, and the values around the call cost the tick a frame
+    // and copies. For the steppers whose every step makes rhs_evals_per_step evaluations (the explicit and
+    // Newtonian ones); an implicit stepper's Newton iteration stays the stepper's own calls. The rare paths
+    // (rest, catch_up) stay out of line (ODESTEP_EVENTS_NOINLINE).
+    template <class System, class... States>
+    [[nodiscard]] ODESTEP_EVENTS_TICK_FLATTEN tick_result<value_type, Capacity> tick_flat(System& f, States&... y) {
+        return tick_on(f, y...);
+    }
 
     template <class System, class... States>
     [[nodiscard]] ODESTEP_INLINE tick_result<value_type, Capacity> tick_on(System& f, States&... y) {
