@@ -238,9 +238,10 @@ private:
 
     // The quiet tick's step needs more than settle: a crossing (or probes, or a NaN from g).
     template <class System>
-    // (ptrs and g by value: in registers where they fit, instead of spilled to the quiet tick's frame.)
+    // (ptrs, the state before the step and g by value: the quiet tick then keeps them in registers where
+    // they fit and builds the arguments on this path only, instead of copying the state to its frame.)
     ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> rest(System& f, const ptrs_type ptrs,
-                                                          typename engine_type::pack& start,
+                                                          typename engine_type::pack start,
                                                           const typename engine_type::values g) {
         ++work_.rested;
         const T t_end = grid_time();  // (converted again here: the quiet tick keeps nothing for this path)
@@ -258,7 +259,7 @@ private:
     // A tick off the quiet path: before start, after a tick that ended early (or failed inside its period),
     // or every tick of an unbounded clock (its grid time is tested here). Up to two pieces, each to the next grid time: the rest of an earlier period, then this one's.
     template <class System>
-    ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> catch_up(System& f, const ptrs_type& ptrs) {
+    ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> catch_up(System& f, const ptrs_type ptrs) {
         tick_result<T, Capacity> r;
         r.status = status::ok;
         r.t = time();
