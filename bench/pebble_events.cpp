@@ -7,7 +7,12 @@
 //            loop uses it (the tick's report is read: a firing is noted with its time);
 //   plain    odestep::rk4 step alone, no events: the event loop's overhead is odestep - plain;
 //   hand     the hand-written RK4 step and the check a careful engineer writes: v and y before the step
-//            against v and y after it, a sign change noted at the step's end (no location).
+//            against v and y after it, a sign change noted at the step's end (no location);
+//   hand_checked  the same loop with the guarantees of odestep's quiet tick: the checked RK4 step
+//            (bench::hand::rk4_checked: a NaN or Inf leaves y as it was), each g evaluated at the step's end,
+//            tested finite (else the state before the step is restored and an error returned, as odestep's
+//            non_finite_event) and against its value at the last step's end in its direction, then kept.
+//            The reference for the quiet tick's own cost (it locates nothing either).
 // Neither Boost.Odeint nor GSL odeiv2 locates events: no variant of theirs.
 //
 // Measured stretches: `pebble_events`, 1000 steps from the throw (t = 0 to 10 s: the apex at 3.15 s and the
@@ -53,7 +58,8 @@ struct firing_log {
     std::uint32_t count[2];
     double t[2];
 };
-firing_log odestep_log, hand_log;
+firing_log odestep_log, hand_log, hand_checked_log;
+double hand_g[2];  // hand_checked: g of the apex and the ground at the last step's end
 
 void start_odestep(const State& y0, double t0) {
     if (odestep_loop.start(t0, dt, y0) != odestep::status::ok) {
@@ -63,6 +69,11 @@ void start_odestep(const State& y0, double t0) {
     odestep_log = {};
 }
 void start_hand(const State&, double) { hand_log = {}; }
+void start_hand_checked(const State& y0, double t0) {
+    hand_checked_log = {};
+    hand_g[0] = speed(t0, y0);
+    hand_g[1] = height(t0, y0);
+}
 
 // The closed form. Up (v > 0): v = vt tan(phi0 - t / tau), y = vt tau ln(cos(phi0 - t / tau) / cos phi0) with
 // tau = vt / g, phi0 = atan(v0 / vt); apex at t_a = tau phi0, y_max = vt tau ln(1 / cos phi0). Down:
@@ -115,6 +126,28 @@ BENCH_STEP int bench_step_pebble_events_hand(State& y, State&, double t, double 
     return 0;
 }
 
+BENCH_STEP int bench_step_pebble_events_hand_checked(State& y, State&, double t, double h) {
+    const State before = y;
+    if (bench::hand::rk4_checked(rhs, y, t, h) != bench::hand::ok) return bench::hand::non_finite;
+    const double t_end = t + h;
+    const std::array<double, 2> g{speed(t_end, y), height(t_end, y)};
+    if (!bench::hand::finite_state(g[0] + g[1], g)) {
+        y = before;
+        return 2;  // an event function NaN or Inf
+    }
+    if (hand_g[0] > 0 && g[0] <= 0) {  // apex (falling)
+        hand_checked_log.count[0] += 1;
+        hand_checked_log.t[0] = t_end;
+    }
+    if (hand_g[1] > 0 && g[1] <= 0) {  // ground (falling)
+        hand_checked_log.count[1] += 1;
+        hand_checked_log.t[1] = t_end;
+    }
+    hand_g[0] = g[0];
+    hand_g[1] = g[1];
+    return 0;
+}
+
 namespace {
 const std::vector<bench::variant<State>>& variants() {
     static const std::vector<bench::variant<State>> vs{
@@ -123,7 +156,10 @@ const std::vector<bench::variant<State>>& variants() {
         {"plain", "odestep::rk4 step alone, no events (the tick's step without the event loop)",
          bench_step_pebble_events_plain, true},
         {"hand", "hand-written RK4 loop + sign test of v and y against their values before the step",
-         bench_step_pebble_events_hand, true, start_hand}};
+         bench_step_pebble_events_hand, true, start_hand},
+        {"hand_checked",
+         "hand-written checked RK4 + the events' g at the step's end, tested finite and against their last values",
+         bench_step_pebble_events_hand_checked, true, start_hand_checked}};
     return vs;
 }
 
@@ -216,6 +252,9 @@ int extra_checks(const bench::problem<State>& p, const counted_run& cr) {
     const int bad1 = bench::run_steps(vs[1], p, y_plain, err, p.check_steps);
     bench::start_run(vs[2], p);
     bench::run_steps(vs[2], p, y_hand, err, p.check_steps);
+    State y_hand_checked = p.y0;
+    bench::start_run(vs[3], p);
+    const int bad3 = bench::run_steps(vs[3], p, y_hand_checked, err, p.check_steps);
     const bool bits = std::memcmp(y_odestep.data(), y_plain.data(), sizeof(State)) == 0;
     std::snprintf(text, sizeof text,
                   "bit-identical to odestep after %d steps: %s (record events leave the trajectory alone)",
@@ -237,11 +276,12 @@ int extra_checks(const bench::problem<State>& p, const counted_run& cr) {
                   seen.t[1], seen.count[1], tg, eg, tol_ground);
     report("odestep", seen.count[1] == 1 && eg <= tol_ground, text);
 
-    // The hand loop sees each event in the tick in which odestep locates it.
-    bool same_ticks = true;
+    // The hand loops see each event in the tick in which odestep locates it.
+    bool same_ticks = bad3 == 0;
     for (int e = 0; e < 2; ++e)
         same_ticks =
-            same_ticks && hand_log.count[e] == 1 && seen.t[e] > hand_log.t[e] - dt && seen.t[e] <= hand_log.t[e];
+            same_ticks && hand_log.count[e] == 1 && seen.t[e] > hand_log.t[e] - dt && seen.t[e] <= hand_log.t[e] &&
+            hand_checked_log.count[e] == 1 && hand_checked_log.t[e] == hand_log.t[e];
     std::snprintf(text, sizeof text,
                   "apex seen at the end of the step to t=%.2f, ground to t=%.2f: the ticks odestep locates them in",
                   hand_log.t[0], hand_log.t[1]);

@@ -456,11 +456,12 @@ private:
     static constexpr bool actions_keep_state = (keeps_state_v<Events> && ...);
 
     // The quiet step's test: true only if every g is finite and no event crossed; false when it cannot tell
-    // (advance_rest decides then). With every event armed and no probes (all_armed) it is one product per event: g before times g now
-    // is positive only when both are strictly on the same side of zero, which no direction counts as a
-    // crossing (a product that underflows to zero only sends the step to the full test).
-    // The products also prove every g finite (the memory's g are): their sum, of positive terms, is at most
-    // the largest finite T only if every term is finite (an overflowed sum only sends the step on, too).
+    // (advance_rest decides then). With every event armed and no probes (all_armed) it is one product per
+    // event: g before times g now is positive only when both are strictly on the same side of zero, which no
+    // direction counts as a crossing (a product that underflows to zero only sends the step to the full
+    // test); and one finiteness test of the plain sum of the g (finite_sum: an overflowed sum only sends the
+    // step on, too), the test the steps make of a state (where g reads the state's components, the compiler
+    // may find it already made).
     ODESTEP_INLINE bool quiet(const set_type& set, const values& g) const {
         if (all_armed) return same_sides(g, events_seq{});
         if (set.limits.probes != 0) return false;
@@ -472,11 +473,7 @@ private:
     // g then stays in registers.)
     template <std::size_t... I>
     ODESTEP_INLINE bool same_sides(const values& g, std::index_sequence<I...>) const {
-        const values p{(memory[I].g * g[I])...};
-        bool same_side = p[0] > T(0);
-        T sum = p[0];
-        ((I > 0 ? (void)(same_side = same_side && p[I] > T(0), sum += p[I]) : (void)0), ...);
-        return same_side && sum <= std::numeric_limits<T>::max();
+        return ((memory[I].g * g[I] > T(0)) && ...) && finite_sum(sum_of(g, events_seq{}));
     }
     template <std::size_t... I>
     ODESTEP_INLINE static T sum_of(const values& g, std::index_sequence<I...>) {

@@ -21,6 +21,17 @@
 #include "engine.hpp"
 #include "event.hpp"
 
+/// The per-tick event loop's quiet tick (event_stepper::tick with an explicit or Newtonian stepper) inlines
+/// every call in it, the step's and the right-hand side's included (GCC's and Clang's flatten), as the loop
+/// written out by hand does. Define it empty to keep the step a call (less flash, more instructions).
+#ifndef ODESTEP_EVENTS_TICK_FLATTEN
+#if defined(__GNUC__) || defined(__clang__)
+#define ODESTEP_EVENTS_TICK_FLATTEN [[gnu::flatten]] inline
+#else
+#define ODESTEP_EVENTS_TICK_FLATTEN inline
+#endif
+#endif
+
 namespace odestep {
 
 /// The event loop for a control loop, one `tick` per period of a timer: the clock is t0 + n dt on an
@@ -129,7 +140,7 @@ public:
     [[nodiscard]] ODESTEP_INLINE tick_result<value_type, Capacity> tick(System&& f, States&... y) {
         static_assert(sizeof...(States) == arity, "odestep: tick(f, y) (Newtonian: tick(a, x, v))");
         if constexpr (detail::exact_rhs_evals_v<Stepper>) {
-            return tick_on(f, y...);  // f's evaluations derived from the step calls (see counts())
+            return tick_flat(f, y...);  // f's evaluations derived from the step calls (see counts())
         } else {
             auto counted = detail::counting(f, tally_);
             return tick_on(counted, y...);
@@ -156,7 +167,7 @@ public:
     }
 
     /// The time of the state: t0 + reached() dt, or the time a tick stopped at.
-    constexpr value_type time() const noexcept { return t_now_; }
+    constexpr value_type time() const noexcept { return off_grid_ ? t_now_ : clock_.time(n_); }
     /// Periods counted: the calls of tick since start that did not return an error.
     constexpr std::uint64_t ticks() const noexcept { return n_ + lag_; }
     /// The last grid time the state reached is t0 + reached() dt: ticks(), or one less after a tick that
@@ -179,28 +190,37 @@ private:
     using engine_type = detail::event_engine<state_type, arity, Set>;
     using ptrs_type = std::array<state_type*, arity>;
 
+    // The quiet tick with every call in it inlined (the step, f, every g), as the loop written out by hand:
+    // GCC at -O2 otherwise calls the step out of line, and the values around the call cost the tick a frame
+    // and copies. For the steppers whose every step makes rhs_evals_per_step evaluations (the explicit and
+    // Newtonian ones); an implicit stepper's Newton iteration stays the stepper's own calls. The rare paths
+    // (rest, catch_up) stay out of line (ODESTEP_EVENTS_NOINLINE).
+    template <class System, class... States>
+    [[nodiscard]] ODESTEP_EVENTS_TICK_FLATTEN tick_result<value_type, Capacity> tick_flat(System& f, States&... y) {
+        return tick_on(f, y...);
+    }
+
     template <class System, class... States>
     [[nodiscard]] ODESTEP_INLINE tick_result<value_type, Capacity> tick_on(System& f, States&... y) {
         const std::array<state_type*, arity> ptrs{&y...};
         if (ODESTEP_UNLIKELY(clock_state_ != clock_state::on_grid)) return catch_up(f, ptrs);
         tick_result<T, Capacity> r;  // firings past `fired` stay unwritten: clearing them cost most of a quiet tick
-        r.status = status::ok;
-        r.t = t_now_;
         r.fired = 0;
         r.event = no_event;
-        // The time of the state (t_now_) is the last tick's end; the tick's end is converted from the counter
-        // after the step (on the grid nothing is kept across the step's call).
+        // On the grid the times are the counter's, t0 + n dt, converted where they are used (nothing stores
+        // them: a step and events that do not read t, and a caller who does not read r.t, convert nothing).
+        const T t_s = clock_.time(n_);
         typename engine_type::pack start;
-        r.status = engine_type::step(stepper_, f, ptrs, t_now_, clock_.dt, start);
+        r.status = engine_type::step(stepper_, f, ptrs, t_s, clock_.dt, start);
         if (ODESTEP_UNLIKELY(r.status != status::ok)) {
             ++work_.quiet_failed;
-            return r;  // y untouched, at t_now_
+            r.t = t_s;
+            return r;  // y untouched, at t_s
         }
         const T t_end = grid_time();  // finite: an unbounded clock never takes this path (see start)
         typename engine_type::values g;
-        if (ODESTEP_UNLIKELY(!engine_.settle_armed(set_, ptrs, t_end, g))) return rest(f, ptrs, start, g, t_end);
+        if (ODESTEP_UNLIKELY(!engine_.settle_armed(set_, ptrs, t_end, g))) return rest(f, ptrs, start, g);
         ++n_;
-        t_now_ = t_end;
         r.t = t_end;
         return r;
     }
@@ -218,18 +238,20 @@ private:
 
     // The quiet tick's step needs more than settle: a crossing (or probes, or a NaN from g).
     template <class System>
-    // (ptrs and g by value: in registers where they fit, instead of spilled to the quiet tick's frame.)
+    // (ptrs, the state before the step and g by value: the quiet tick then keeps them in registers where
+    // they fit and builds the arguments on this path only, instead of copying the state to its frame.)
     ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> rest(System& f, const ptrs_type ptrs,
-                                                          typename engine_type::pack& start,
-                                                          const typename engine_type::values g, T t_end) {
+                                                          typename engine_type::pack start,
+                                                          const typename engine_type::values g) {
         ++work_.rested;
+        const T t_end = grid_time();  // (converted again here: the quiet tick keeps nothing for this path)
         tick_result<T, Capacity> r;
         r.status = status::ok;
-        r.t = t_now_;
+        r.t = time();
         r.fired = 0;
         r.event = no_event;
         const std::uint64_t target = n_ + 1;
-        finish_piece(f, ptrs, start, g, t_now_, clock_.dt, t_end, r);
+        finish_piece(f, ptrs, start, g, time(), clock_.dt, t_end, r);
         account(r, target);
         return r;
     }
@@ -237,10 +259,10 @@ private:
     // A tick off the quiet path: before start, after a tick that ended early (or failed inside its period),
     // or every tick of an unbounded clock (its grid time is tested here). Up to two pieces, each to the next grid time: the rest of an earlier period, then this one's.
     template <class System>
-    ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> catch_up(System& f, const ptrs_type& ptrs) {
+    ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> catch_up(System& f, const ptrs_type ptrs) {
         tick_result<T, Capacity> r;
         r.status = status::ok;
-        r.t = t_now_;
+        r.t = time();
         r.fired = 0;
         r.event = no_event;
         if (clock_state_ == clock_state::idle) {
@@ -265,7 +287,7 @@ private:
             }
             const bool partial = off_grid_;
             typename engine_type::pack start;
-            const status s = engine_type::step(stepper_, f, ptrs, t_now_, h, start);
+            const status s = engine_type::step(stepper_, f, ptrs, time(), h, start);
             ++work_.off_steps;
             if (s != status::ok) {
                 r.status = s;
@@ -279,12 +301,12 @@ private:
                 t_now_ = t_end;
                 off_grid_ = false;
             } else {
-                finish_piece(f, ptrs, start, g, t_now_, h, t_end, r);
+                finish_piece(f, ptrs, start, g, time(), h, t_end, r);
             }
             // A partial step (from where a tick stopped back to the grid) does not fit a multistep history.
             if (partial) detail::reset_if_any(stepper_);
         }
-        r.t = t_now_;
+        r.t = time();
         account(r, target);
         return r;
     }
@@ -339,7 +361,7 @@ private:
     Set set_;
     engine_type engine_{};
     detail::grid_clock<value_type> clock_{};
-    value_type t_now_ = value_type(0);  // the time of the state: t0 + n dt, or where a tick stopped
+    value_type t_now_ = value_type(0);  // the time of the state off the grid, where a tick stopped (on it: time())
     std::uint64_t n_ = 0;    // the last grid time reached; 64 bits on every target (a 32-bit count of 1 kHz ticks
                              // wraps after 49.7 days)
     std::uint64_t lag_ = 0;  // periods counted beyond n_ (after ticks that ended early)
