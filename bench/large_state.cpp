@@ -473,8 +473,12 @@ int one(bool counting) {
     return rk4_case<T, N>::check() + dp54_case<T, N>::check() + vv_case<T, N>::check();
 }
 
+// LARGE_ONLY_N=n builds one size alone (scripts/perf_gate.sh: N = 1000 at -O2, a few seconds to compile).
 template <class T>
 int all_sizes(bool counting) {
+#ifdef LARGE_ONLY_N
+    return one<T, LARGE_ONLY_N>(counting);
+#endif
     return one<T, 2>(counting) + one<T, 8>(counting) + one<T, 64>(counting) + one<T, 192>(counting) +
            one<T, 1000>(counting) + one<T, 10000>(counting);
 }

@@ -90,6 +90,7 @@ else
   # Instruction counts are deterministic: RK4 on Lorenz must stay within 1.05x a hand-written loop at -O2.
   run bench-quick scripts/bench.sh --quick
 fi
+run perf-gate scripts/perf_gate.sh  # instruction counts (valgrind): large states and the C API against hand loops
 run clean-tree scripts/check_clean_tree.sh --check build/work_tree_before.txt
 
 echo

@@ -29,30 +29,17 @@ constexpr std::size_t max_events = ODESTEP_C_MAX_EVENTS;
 
 /// The C event types of one precision.
 template <class T>
-struct event_types;
-template <>
-struct event_types<double> {
-    using event = odestep_event_d;
-    using loop = odestep_event_loop_d;
-    using tick = odestep_tick_d;
-    using g = odestep_event_fn_d;
-    using action = odestep_event_action_d;
-    using newton_event = odestep_newton_event_d;
-    using newton_loop = odestep_newton_event_loop_d;
-    using newton_g = odestep_newton_event_fn_d;
-    using newton_action = odestep_newton_event_action_d;
-};
-template <>
-struct event_types<float> {
-    using event = odestep_event_f;
-    using loop = odestep_event_loop_f;
-    using tick = odestep_tick_f;
-    using g = odestep_event_fn_f;
-    using action = odestep_event_action_f;
-    using newton_event = odestep_newton_event_f;
-    using newton_loop = odestep_newton_event_loop_f;
-    using newton_g = odestep_newton_event_fn_f;
-    using newton_action = odestep_newton_event_action_f;
+struct event_types {
+    static_assert(std::is_same_v<T, double> || std::is_same_v<T, float>);
+    using event = by_precision<T, odestep_event_d, odestep_event_f>;
+    using loop = by_precision<T, odestep_event_loop_d, odestep_event_loop_f>;
+    using tick = by_precision<T, odestep_tick_d, odestep_tick_f>;
+    using g = by_precision<T, odestep_event_fn_d, odestep_event_fn_f>;
+    using action = by_precision<T, odestep_event_action_d, odestep_event_action_f>;
+    using newton_event = by_precision<T, odestep_newton_event_d, odestep_newton_event_f>;
+    using newton_loop = by_precision<T, odestep_newton_event_loop_d, odestep_newton_event_loop_f>;
+    using newton_g = by_precision<T, odestep_newton_event_fn_d, odestep_newton_event_fn_f>;
+    using newton_action = by_precision<T, odestep_newton_event_action_d, odestep_newton_event_action_f>;
 };
 
 /// g(t, y) of one C event; without a function (an unused slot), the constant 1. `calls` counts the calls of

@@ -38,16 +38,10 @@ namespace odestep::capi {
 
 /// The C types of one precision.
 template <class T>
-struct stiff_types;
-template <>
-struct stiff_types<double> {
-    using system = odestep_jac_system_d;
-    using stepper = odestep_stiff_stepper_d;
-};
-template <>
-struct stiff_types<float> {
-    using system = odestep_jac_system_f;
-    using stepper = odestep_stiff_stepper_f;
+struct stiff_types {
+    static_assert(std::is_same_v<T, double> || std::is_same_v<T, float>);
+    using system = by_precision<T, odestep_jac_system_d, odestep_jac_system_f>;
+    using stepper = by_precision<T, odestep_stiff_stepper_d, odestep_stiff_stepper_f>;
 };
 
 template <class T>
@@ -57,10 +51,7 @@ using jac_system_t = typename stiff_types<T>::system;
 template <class T>
 struct c_f_only {
     const jac_system_t<T>* sys;
-    void operator()(T t, const state<T>& y, state<T>& dydt) const {
-        sys->f(t, y.data(), dydt.data(), sys->ctx);
-        for (std::size_t i = sys->n; i < max_states; ++i) dydt[i] = T(0);
-    }
+    void operator()(T t, const state<T>& y, state<T>& dydt) const { padded_call(sys->f, t, y, dydt, sys->ctx); }
 };
 
 /// y' = f(t, y) with the caller's Jacobian: its n x n row-major matrix in the top-left block of the padded
@@ -68,10 +59,7 @@ struct c_f_only {
 template <class T>
 struct c_f_jacobian {
     const jac_system_t<T>* sys;
-    void operator()(T t, const state<T>& y, state<T>& dydt) const {
-        sys->f(t, y.data(), dydt.data(), sys->ctx);
-        for (std::size_t i = sys->n; i < max_states; ++i) dydt[i] = T(0);
-    }
+    void operator()(T t, const state<T>& y, state<T>& dydt) const { padded_call(sys->f, t, y, dydt, sys->ctx); }
     void jacobian(T t, const state<T>& y, jacobian_t<state<T>>& dfdy) const {
         const std::size_t n = sys->n;
         std::array<T, max_states * max_states> packed{};  // the callback writes the first n * n
@@ -178,7 +166,7 @@ struct stiff_of {
     }
 };
 
-template <class S, class Kind>
+template <class S, class Kind, class WithJacobian = c_f_jacobian<typename S::value_type>>
 constexpr stiff_ops<typename S::value_type> make_stiff_ops(const char* name) noexcept {
     using T = typename S::value_type;
     using F = stiff_of<S, Kind>;
@@ -186,21 +174,14 @@ constexpr stiff_ops<typename S::value_type> make_stiff_ops(const char* name) noe
             S::order,
             static_cast<unsigned>(S::rhs_evals_per_step),
             &F::construct,
-            &F::template step<c_f_jacobian<T>>,
+            &F::template step<WithJacobian>,
             &F::template step<c_f_only<T>>};
 }
 
 /// An explicit method under error control: no Jacobian, so both forms are the same function.
 template <class S>
 constexpr stiff_ops<typename S::value_type> make_explicit_controlled_ops(const char* name) noexcept {
-    using T = typename S::value_type;
-    using F = stiff_of<S, error_tolerance_kind>;
-    return {name,
-            S::order,
-            static_cast<unsigned>(S::rhs_evals_per_step),
-            &F::construct,
-            &F::template step<c_f_only<T>>,
-            &F::template step<c_f_only<T>>};
+    return make_stiff_ops<S, error_tolerance_kind, c_f_only<typename S::value_type>>(name);
 }
 
 /// The transition function of S (an explicit_rk_transition on state<T>).
