@@ -133,7 +133,9 @@ constexpr T default_tolerance() noexcept {
 /// from that same y (compared bit for bit, so a caller that changed y between calls is never given a stale
 /// derivative) at that time (to four ULPs: the grid's t0 + (i + 1) dt and the interval's t + dt). No heap, no static state; a copy is an independent engine.
 template <class Method, class State>
-class adaptive_rk {
+class adaptive_rk : public engine_settings<adaptive_rk<Method, State>, State, detail::pi_memory<value_type_t<State>>> {
+    using settings = engine_settings<adaptive_rk, State, detail::pi_memory<value_type_t<State>>>;
+
 public:
     using state_type = State;                ///< the state, std::array<T, N>
     using value_type = value_type_t<State>;  ///< its scalar T
@@ -164,39 +166,13 @@ public:
         : adaptive_rk(tolerances<State>::uniform(detail::default_tolerance<T>(), detail::default_tolerance<T>())) {}
     /// The given tolerances and controller settings (checked by settings_status() before any use).
     explicit adaptive_rk(const tolerances<State>& tol, const step_control<T>& control = {}) noexcept
-        : tol_(tol), control_(control) {}
+        : settings(tol, control) {}
 
-    /// status::invalid_tolerance, status::invalid_setting, or ok.
-    status settings_status() const noexcept {
-        const status s = tol_.check();
-        return s != status::ok ? s : control_.check();
-    }
-    /// The tolerances.
-    const tolerances<State>& tolerance() const noexcept { return tol_; }
-    /// The controller's settings.
-    const step_control<T>& control() const noexcept { return control_; }
-    /// Replaces the tolerances (checked by the next call).
-    void set_tolerance(const tolerances<State>& tol) noexcept { tol_ = tol; }
-    /// Replaces the controller's settings (checked by the next call).
-    void set_control(const step_control<T>& control) noexcept { control_ = control; }
-
-    /// |h| of the next attempt; 0 before the first (then Hairer's estimate chooses it).
-    T step_size() const noexcept { return h_; }
-    /// Sets |h| of the next attempt (0: estimate it); a negative or non-finite value is ignored.
-    void set_step_size(T h) noexcept {
-        if (detail::is_finite(h) && h >= T(0)) h_ = h;
-    }
     /// Forgets the step size, the controller's memory and the kept stage: the next call starts afresh.
     void restart() noexcept {
-        h_ = T(0);
-        err_prev_ = T(1) / T(10000);
-        after_rejection_ = false;
+        ctl_.restart();
         k0_valid_ = false;
     }
-    /// Accepted steps since construction.
-    step_count accepted_steps() const noexcept { return accepted_; }
-    /// Rejected attempts since construction.
-    step_count rejected_steps() const noexcept { return rejected_; }
 
     /// One attempted step from (t, y) toward t_end, never past it and never longer than
     /// step_control::max_step; the step lands exactly on t_end when the step size would reach within 1% of
@@ -209,33 +185,21 @@ public:
     template <class System, class Sink = detail::no_step_sink>
     status attempt(System& f, T& t, State& y, T t_end, bool& accepted, Sink&& sink = Sink{}) {
         accepted = false;
-        const T span = t_end - t;
-        if (span == T(0)) {
+        detail::attempt_plan<T> p(t, t_end);
+        if (p.span == T(0)) {
             accepted = true;
             return status::ok;
         }
-        const T dir = span > T(0) ? T(1) : T(-1);
-        const T rem = detail::abs_value(span);
         status s = first_stage(f, t, y);
         if (s != status::ok) return s;
-        T mag = h_;
-        if (!(mag > T(0))) {
-            T limit = rem;
-            if (control_.max_step > T(0) && control_.max_step < limit) limit = control_.max_step;
-            mag = detail::abs_value(initial_step(f, t, y, k0_, estimate_order - 1, tol_, limit, dir));
-            if (!(mag > T(0))) return status::non_finite;  // f at the estimate's probe was not finite
-        }
-        if (control_.max_step > T(0) && mag > control_.max_step) mag = control_.max_step;
-        // Within 1% of t_end the step lands on it (no sliver is left), unless that would stretch it past
-        // max_step: then the rest, at most 1.01 max_step, is split into two equal steps.
-        const bool near_end = mag + mag / T(100) >= rem;
-        const bool split = near_end && control_.max_step > T(0) && rem > control_.max_step;
-        const bool last = near_end && !split;
-        const T h = last ? span : split ? dir * (rem / T(2)) : dir * mag;
-        // The controller's step below ten ULPs of t: the run cannot resolve it. A step to t_end is the
-        // caller's own interval, however short (an event's location re-steps to within ULPs of it).
-        if (!last && !(detail::abs_value(h) > T(10) * std::numeric_limits<T>::epsilon() * detail::abs_value(t)))
-            return status::step_too_small;
+        p.mag = ctl_.h;
+        // f at the estimate's probe not finite: non_finite
+        if (!(p.mag > T(0)) && !p.estimate(f, t, y, k0_, estimate_order, tol_, control_)) return status::non_finite;
+        p.bound(control_);
+        // A rest too long to land on in one step is split into two equal steps.
+        const bool last = p.last;
+        const T h = last ? p.span : p.split ? p.dir * (p.rem / T(2)) : p.dir * p.mag;
+        if (p.unresolved(h, t)) return status::step_too_small;
         std::array<State, pair::S> k;
         k[0] = k0_;
         State y_new{};  // written by pair::step (for FSAL in its stage loop, which GCC cannot always see)
@@ -245,19 +209,13 @@ public:
         if (!pair::step(f, y, t, h, last ? t_end : t + h, k, y_new, err, err2) || !detail::all_finite(y_new, err, err2))
             return status::non_finite;
         const T e = pair::norm(err, err2, y, y_new, tol_);
-        const pi_gains<T> g = gains_for(control_, estimate_order);
         const T habs = detail::abs_value(h);
         if (e <= T(1)) {
-            T next = habs * step_factor(control_, g, estimate_order, e, err_prev_, after_rejection_);
+            T next = ctl_.next_step(control_, estimate_order, habs, e);
             // A step shortened to land on t_end (or to split the rest) says nothing against the size planned:
             // keep the larger.
-            if ((last || split) && mag > next) next = mag;
-            // A factor that underflows the step to zero (a tiny min_factor or safety) keeps this step's size:
-            // a zero would send the next attempt back to the first-step estimate, one evaluation over the
-            // published bound.
-            h_ = next > T(0) ? next : habs;
-            err_prev_ = detail::max_value(e, T(1) / T(10000));
-            after_rejection_ = false;
+            if ((last || p.split) && p.mag > next) next = p.mag;
+            ctl_.accept(next, habs, e);
             sink(static_cast<const T&>(t), static_cast<const State&>(y), static_cast<const T&>(h),
                  static_cast<const std::array<State, pair::S>&>(k), static_cast<const State&>(y_new));
             const T t_new = last ? t_end : t + h;
@@ -269,13 +227,10 @@ public:
             detail::assign(y, y_new);
             t = t_new;
             accepted = true;
-            ++accepted_;
+            ++ctl_.accepted;
         } else {
-            h_ = habs * step_factor(control_, g, estimate_order, e, err_prev_, after_rejection_);
-            after_rejection_ = true;
-            ++rejected_;
             // Shrunk to zero (an underflow, possible only near t = 0): never back to the first-step estimate.
-            if (!(h_ > T(0))) return status::step_too_small;
+            return ctl_.reject_error(control_, estimate_order, habs, e);
         }
         return status::ok;
     }
@@ -293,7 +248,7 @@ public:
 private:
     template <class System>
     status first_stage(System& f, T t, const State& y) {
-        if (k0_valid_ && same_time(t, t0_) && detail::same_values(y, y0_)) return status::ok;
+        if (k0_valid_ && detail::same_point_time(t, t0_) && detail::same_values(y, y0_)) return status::ok;
         State k;
         detail::evaluate(f, t, y, k);
         if (!detail::all_finite(k)) {
@@ -303,12 +258,6 @@ private:
         keep_first_stage(t, y, k);
         return status::ok;
     }
-    // The same time to a few roundings: the grid's t0 + (i + 1) dt and the interval's end t + dt differ by
-    // about an ULP, and f there is the kept stage to that time perturbation, as any stage's t + c h is.
-    static bool same_time(T a, T b) noexcept {
-        const T d = detail::abs_value(a - b);
-        return d <= T(4) * std::numeric_limits<T>::epsilon() * (detail::abs_value(a) + detail::abs_value(b));
-    }
     void keep_first_stage(T t, const State& y, const State& k) noexcept {
         t0_ = t;
         detail::assign(y0_, y);
@@ -316,17 +265,13 @@ private:
         k0_valid_ = true;
     }
 
-    tolerances<State> tol_;
-    step_control<T> control_;
-    T h_ = T(0);
-    T err_prev_ = T(1) / T(10000);
-    bool after_rejection_ = false;
+    using settings::control_;
+    using settings::ctl_;
+    using settings::tol_;
     bool k0_valid_ = false;
     T t0_ = T(0);
     State y0_{};
     State k0_{};
-    step_count accepted_ = 0;
-    step_count rejected_ = 0;
 };
 
 namespace detail {

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <limits>
 
+#include "../detail/grid_clock.hpp"
 #include "../detail/ops.hpp"
 #include "../state.hpp"
 #include "../status.hpp"
@@ -215,6 +216,172 @@ value_type_t<State> initial_step(System& f, value_type_t<State> t0, const State&
     if (limit > T(0) && h > limit) h = limit;
     return direction < T(0) ? -h : h;
 }
+
+namespace detail {
+/// The time an engine stopped at, as a caller's grid gives it back: equal within a few rounding errors (the
+/// grid's t0 + (i + 1) dt against the engine's t + dt differ by about an ULP), so a call on the next interval
+/// continues with what the engine carries (f there is the kept value to that time perturbation, as any
+/// stage's t + c h is).
+template <class T>
+bool same_point_time(T a, T b) noexcept {
+    const T d = abs_value(a - b);
+    return d <= T(4) * std::numeric_limits<T>::epsilon() * (abs_value(a) + abs_value(b));
+}
+
+/// What every error-controlled engine carries from one attempt to the next for its step size: the |h| to try
+/// next, whether the last attempt was rejected, the failed attempts in a row, and the rejections counted.
+template <class T>
+struct step_memory {
+    T h = T(0);                  ///< |h| of the next attempt; 0: estimate it
+    bool rejected_last = false;  ///< the last attempt was rejected
+    std::size_t failures = 0;    ///< failed attempts (singular matrix, NaN or Inf) in a row
+    step_count rejected = 0;     ///< rejected attempts since construction
+    step_count accepted = 0;     ///< accepted steps since construction
+
+    /// A rejected attempt of size step: the next one is |step| factor; step_too_small when that is 0.
+    status shrink(T step, T factor) noexcept {
+        ++rejected;
+        rejected_last = true;
+        h = abs_value(step) * factor;
+        return h > T(0) ? status::ok : status::step_too_small;
+    }
+    /// A failed attempt: h halved. `failure` (singular_matrix, non_finite) is returned once it has happened
+    /// max_failures times in a row; ok (an iteration that diverged or reached its cap) never ends the
+    /// attempts by itself (the caller's attempt cap bounds them).
+    status retry_smaller(T step, status failure, std::size_t max_failures) noexcept {
+        if (failure != status::ok && ++failures >= max_failures) {
+            failures = 0;
+            (void)shrink(step, T(1) / T(2));
+            return failure;
+        }
+        return shrink(step, T(1) / T(2));
+    }
+};
+
+/// The PI controller's memory (step_control; adaptive_rk and rosenbrock_adaptive): step_memory and the
+/// previous accepted error norm.
+template <class T>
+struct pi_memory : step_memory<T> {
+    T err_prev = T(1) / T(10000);  ///< the previous accepted step's norm, at least 1e-4
+
+    /// Forgets the step size and the controller's memory.
+    void restart() noexcept {
+        this->h = T(0);
+        err_prev = T(1) / T(10000);
+        this->rejected_last = false;
+        this->failures = 0;
+    }
+    /// |h| step_factor after a step of size habs with error norm e (k the estimate's order).
+    T next_step(const step_control<T>& c, int k, T habs, T e) const noexcept {
+        return habs * step_factor(c, gains_for(c, k), k, e, err_prev, this->rejected_last);
+    }
+    /// Rejected by the error test (e > 1): the next |h| shrunk by step_factor.
+    status reject_error(const step_control<T>& c, int k, T habs, T e) noexcept {
+        return this->shrink(habs, step_factor(c, gains_for(c, k), k, e, err_prev, this->rejected_last));
+    }
+    /// Accepted with error norm e, the next |h| `next` (this step's size when next underflowed to zero: a zero
+    /// would send the next attempt back to the first-step estimate, one evaluation over the published bound).
+    void accept(T next, T habs, T e) noexcept {
+        this->h = next > T(0) ? next : habs;
+        err_prev = max_value(e, T(1) / T(10000));
+        this->rejected_last = false;
+        this->failures = 0;
+    }
+};
+
+/// The size of one attempt from t toward t_end, as every error-controlled engine plans it: `mag` the
+/// controller's |h| within max_step; within 1% of t_end the step lands on it (`last`, no sliver is left)
+/// unless that would stretch it past max_step (`split`: the rest, at most 1.01 max_step, is more than one
+/// step).
+template <class T>
+struct attempt_plan {
+    T span;              ///< t_end - t
+    T dir;               ///< the sign of span
+    T rem;               ///< |span|
+    T mag = T(0);        ///< |h| the controller asks for, within max_step
+    bool last = false;   ///< the step lands on t_end
+    bool split = false;  ///< near t_end, but landing would exceed max_step
+
+    attempt_plan(T t, T t_end) noexcept : span(t_end - t), dir(span > T(0) ? T(1) : T(-1)), rem(abs_value(span)) {}
+
+    /// The first-step estimate (initial_step for an estimate of order k, from f0 = f(t, y)) within the rest
+    /// of the interval and max_step: false when f at its probe was not finite.
+    template <class State, class System>
+    bool estimate(System& f, T t, const State& y, const State& f0, int k, const tolerances<State>& tol,
+                  const step_control<T>& c) {
+        T limit = rem;
+        if (c.max_step > T(0) && c.max_step < limit) limit = c.max_step;
+        mag = abs_value(initial_step(f, t, y, f0, k - 1, tol, limit, dir));
+        return mag > T(0);
+    }
+    /// mag within max_step, and whether the step lands on t_end (last) or splits the rest (split).
+    void bound(const step_control<T>& c) noexcept {
+        if (c.max_step > T(0) && mag > c.max_step) mag = c.max_step;
+        const bool near_end = mag + mag / T(100) >= rem;
+        split = near_end && c.max_step > T(0) && rem > c.max_step;
+        last = near_end && !split;
+    }
+    /// The controller's step h below ten ULPs of t: the run cannot resolve it. A step to t_end is the
+    /// caller's own interval, however short (an event's location re-steps to within ULPs of it).
+    bool unresolved(T h, T t) const noexcept {
+        return !last && !(abs_value(h) > T(10) * std::numeric_limits<T>::epsilon() * abs_value(t));
+    }
+};
+}  // namespace detail
+
+/// \brief The settings every error-controlled engine has (odestep::adaptive_rk, odestep::rosenbrock_adaptive,
+/// odestep::sdirk_adaptive, odestep::radau5): the tolerances, the controller's settings and the step size to
+/// try next, with what the engine carries between attempts for its step size (`Memory`).
+///
+/// `Engine` is the engine deriving from it; an engine that derives something from the tolerances (Radau's
+/// transformed tolerances, Newton's) has it recomputed through its `tolerance_changed()` on set_tolerance.
+template <class Engine, class State, class Memory>
+class engine_settings {
+public:
+    using value_type = value_type_t<State>;  ///< the scalar T
+
+private:
+    using T = value_type;
+
+public:
+    /// status::invalid_tolerance, status::invalid_setting, or ok.
+    status settings_status() const noexcept {
+        const status s = tol_.check();
+        return s != status::ok ? s : control_.check();
+    }
+    /// The tolerances, as given.
+    const tolerances<State>& tolerance() const noexcept { return tol_; }
+    /// The controller's settings.
+    const step_control<T>& control() const noexcept { return control_; }
+    /// Replaces the tolerances (checked by the next call).
+    void set_tolerance(const tolerances<State>& tol) noexcept {
+        tol_ = tol;
+        static_cast<Engine&>(*this).tolerance_changed();
+    }
+    /// Replaces the controller's settings (checked by the next call).
+    void set_control(const step_control<T>& control) noexcept { control_ = control; }
+    /// |h| of the next attempt; 0 before the first (then odestep::initial_step chooses it).
+    T step_size() const noexcept { return ctl_.h; }
+    /// Sets |h| of the next attempt (0: estimate it); a negative or non-finite value is ignored.
+    void set_step_size(T h) noexcept {
+        if (detail::is_finite(h) && h >= T(0)) ctl_.h = h;
+    }
+    /// Accepted steps since construction.
+    step_count accepted_steps() const noexcept { return ctl_.accepted; }
+    /// Rejected attempts since construction.
+    step_count rejected_steps() const noexcept { return ctl_.rejected; }
+
+protected:
+    /// The given tolerances and controller settings (checked by settings_status() before any use).
+    engine_settings(const tolerances<State>& tol, const step_control<T>& control) noexcept
+        : tol_(tol), control_(control) {}
+    /// Nothing derived from the tolerances.
+    void tolerance_changed() noexcept {}
+
+    tolerances<State> tol_;    ///< the tolerances
+    step_control<T> control_;  ///< the controller's settings
+    Memory ctl_{};             ///< the step size and what the controller carries between attempts
+};
 
 }  // namespace odestep
 

@@ -37,6 +37,15 @@ namespace detail {
 template <class Engine>
 struct free_extension;
 
+template <class Engine, class = void>
+struct has_free_extension : std::false_type {};
+template <class Engine>
+struct has_free_extension<Engine, std::void_t<decltype(free_extension<Engine>::rhs_evals_to_complete)>>
+    : std::true_type {};
+// An engine the free-running loops with events drive: one with a free_extension.
+template <class Engine>
+inline constexpr bool has_free_extension_v = has_free_extension<Engine>::value;
+
 // The cubic Hermite interpolant (hermite_cubic's polynomial, HNW I (6.7)) in powers of theta about the start:
 //     u = y0 + theta (h f0 + theta ((3 d - 2 h f0 - h f1) + theta (h f0 + h f1 - 2 d))),  d = y1 - y0,
 // so that just after the start it is y0 plus a term of the size of the motion there (theta h f0), not of the
@@ -585,11 +594,14 @@ constexpr std::size_t max_rhs_evals_free_running(std::size_t events, event_limit
     return sat_add(a, sat_mul(m, per_step));
 }
 
-/// integrate_adaptive with events: the free-running run of `engine` from t0 to t1 (as integrate_adaptive
-/// without events) watching `events` (odestep::watch(...)) as integrate does on the grid. Each accepted step
-/// is scanned on its own continuous extension (Dormand-Prince 5(4)'s and DOP853's, cubic Hermite for the
-/// other pairs): a crossing is located to adjacent times of that interpolant and the event's state is its
-/// value there. `terminal` stops the run (status::stopped_by_event, `event`, `t`, y the state there);
+/// integrate_adaptive with events: the free-running run of `engine` (odestep::adaptive_rk, odestep::radau5,
+/// odestep::rosenbrock_adaptive, odestep::sdirk_adaptive) from t0 to t1 (as integrate_adaptive without
+/// events) watching `events` (odestep::watch(...)) as integrate does on the grid. Each accepted step is
+/// scanned on its own continuous extension: Dormand-Prince 5(4)'s and DOP853's, cubic Hermite for the other
+/// explicit pairs; Radau's collocation polynomial and the SDIRK pairs' cubic Hermite interpolant of the
+/// step's ends and slopes (no evaluation of f); for the Rosenbrock pairs the cubic Hermite interpolant of the
+/// step's ends (f at both, two evaluations, only for a step that probes or locates). A crossing is located
+/// to adjacent times of that interpolant and the event's state is its value there. `terminal` stops the run (status::stopped_by_event, `event`, `t`, y the state there);
 /// `record` leaves the run bit for bit as without the event, and the observer sees the event's state at its
 /// time; a callable action cuts the step at the event: the observer sees the state it left there, and the
 /// engine restarts from it (restart(): step size, controller and the kept first stage computed afresh).
@@ -600,71 +612,21 @@ constexpr std::size_t max_rhs_evals_free_running(std::size_t events, event_limit
 /// cut at an event counts as the whole of it): one more is status::event_limit, with the state before it.
 /// Work: at most max_attempts attempts and max_rhs_evals_free_running evaluations of f. Statuses as
 /// integrate_adaptive and integrate with events; `steps` counts the completed steps (a cut step counts).
-template <class Method, class State, class System, class Set, class Observer,
-          std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
-[[nodiscard]] auto integrate_adaptive(adaptive_rk<Method, State>& engine, System&& f, State& y,
-                                      detail::time_t_of<State> t0, detail::time_t_of<State> t1, Set&& events,
+template <class Engine, class System, class Set, class Observer,
+          std::enable_if_t<detail::has_free_extension_v<Engine> && detail::is_event_set_v<Set>, int> = 0>
+[[nodiscard]] auto integrate_adaptive(Engine& engine, System&& f, typename Engine::state_type& y,
+                                      detail::time_t_of<typename Engine::state_type> t0,
+                                      detail::time_t_of<typename Engine::state_type> t1, Set&& events,
                                       Observer&& observe, step_count max_attempts = default_max_attempts) {
     return detail::adaptive_with_events(engine, f, y, t0, t1, events, observe, max_attempts);
 }
 
 /// integrate_adaptive with events, without an observer.
-template <class Method, class State, class System, class Set, std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
-[[nodiscard]] auto integrate_adaptive(adaptive_rk<Method, State>& engine, System&& f, State& y,
-                                      detail::time_t_of<State> t0, detail::time_t_of<State> t1, Set&& events) {
-    detail::no_observer none;
-    return detail::adaptive_with_events(engine, f, y, t0, t1, events, none, default_max_attempts);
-}
-
-/// integrate_adaptive with events and Radau IIA 5: located on the step's collocation polynomial (no
-/// evaluation of f), otherwise as with the explicit pairs.
-template <class State, class System, class Set, class Observer, std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
-[[nodiscard]] auto integrate_adaptive(radau5<State>& engine, System&& f, State& y, detail::time_t_of<State> t0,
-                                      detail::time_t_of<State> t1, Set&& events, Observer&& observe,
-                                      step_count max_attempts = default_max_attempts) {
-    return detail::adaptive_with_events(engine, f, y, t0, t1, events, observe, max_attempts);
-}
-
-/// integrate_adaptive with events and Radau IIA 5, without an observer.
-template <class State, class System, class Set, std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
-[[nodiscard]] auto integrate_adaptive(radau5<State>& engine, System&& f, State& y, detail::time_t_of<State> t0,
-                                      detail::time_t_of<State> t1, Set&& events) {
-    detail::no_observer none;
-    return detail::adaptive_with_events(engine, f, y, t0, t1, events, none, default_max_attempts);
-}
-
-/// integrate_adaptive with events and a Rosenbrock pair: located on the cubic Hermite interpolant of the
-/// step's ends (f at both, two evaluations, only for a step that probes or locates), otherwise as above.
-template <class Method, class State, class System, class Set, class Observer,
-          std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
-[[nodiscard]] auto integrate_adaptive(rosenbrock_adaptive<Method, State>& engine, System&& f, State& y,
-                                      detail::time_t_of<State> t0, detail::time_t_of<State> t1, Set&& events,
-                                      Observer&& observe, step_count max_attempts = default_max_attempts) {
-    return detail::adaptive_with_events(engine, f, y, t0, t1, events, observe, max_attempts);
-}
-
-/// integrate_adaptive with events and a Rosenbrock pair, without an observer.
-template <class Method, class State, class System, class Set, std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
-[[nodiscard]] auto integrate_adaptive(rosenbrock_adaptive<Method, State>& engine, System&& f, State& y,
-                                      detail::time_t_of<State> t0, detail::time_t_of<State> t1, Set&& events) {
-    detail::no_observer none;
-    return detail::adaptive_with_events(engine, f, y, t0, t1, events, none, default_max_attempts);
-}
-
-/// integrate_adaptive with events and an SDIRK pair: located on the cubic Hermite interpolant of the step's
-/// ends and slopes (no evaluation of f), otherwise as above.
-template <class Method, class State, class System, class Set, class Observer,
-          std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
-[[nodiscard]] auto integrate_adaptive(sdirk_adaptive<Method, State>& engine, System&& f, State& y,
-                                      detail::time_t_of<State> t0, detail::time_t_of<State> t1, Set&& events,
-                                      Observer&& observe, step_count max_attempts = default_max_attempts) {
-    return detail::adaptive_with_events(engine, f, y, t0, t1, events, observe, max_attempts);
-}
-
-/// integrate_adaptive with events and an SDIRK pair, without an observer.
-template <class Method, class State, class System, class Set, std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
-[[nodiscard]] auto integrate_adaptive(sdirk_adaptive<Method, State>& engine, System&& f, State& y,
-                                      detail::time_t_of<State> t0, detail::time_t_of<State> t1, Set&& events) {
+template <class Engine, class System, class Set,
+          std::enable_if_t<detail::has_free_extension_v<Engine> && detail::is_event_set_v<Set>, int> = 0>
+[[nodiscard]] auto integrate_adaptive(Engine& engine, System&& f, typename Engine::state_type& y,
+                                      detail::time_t_of<typename Engine::state_type> t0,
+                                      detail::time_t_of<typename Engine::state_type> t1, Set&& events) {
     detail::no_observer none;
     return detail::adaptive_with_events(engine, f, y, t0, t1, events, none, default_max_attempts);
 }
@@ -675,38 +637,11 @@ template <class Method, class State, class System, class Set, std::enable_if_t<d
 /// trajectory the action left), every record firing at its time (after the times before it), and the state
 /// the run stopped at (a time equal to it gets that state). Bounds and statuses as integrate_adaptive with
 /// events; invalid_time for bad times as integrate_times; with no times the call does nothing and returns ok.
-template <class Method, class State, class System, class Times, class Set, class Observer,
-          std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
-[[nodiscard]] auto integrate_times(adaptive_rk<Method, State>& engine, System&& f, State& y,
-                                   detail::time_t_of<State> t0, const Times& times, Set&& events, Observer&& observe,
-                                   step_count max_attempts = default_max_attempts) {
-    return detail::times_with_events(engine, f, y, t0, times, events, observe, max_attempts);
-}
-
-/// integrate_times with events and Radau IIA 5 (the collocation polynomial inside a step).
-template <class State, class System, class Times, class Set, class Observer,
-          std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
-[[nodiscard]] auto integrate_times(radau5<State>& engine, System&& f, State& y, detail::time_t_of<State> t0,
-                                   const Times& times, Set&& events, Observer&& observe,
-                                   step_count max_attempts = default_max_attempts) {
-    return detail::times_with_events(engine, f, y, t0, times, events, observe, max_attempts);
-}
-
-/// integrate_times with events and a Rosenbrock pair (the cubic Hermite interpolant of the step's ends).
-template <class Method, class State, class System, class Times, class Set, class Observer,
-          std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
-[[nodiscard]] auto integrate_times(rosenbrock_adaptive<Method, State>& engine, System&& f, State& y,
-                                   detail::time_t_of<State> t0, const Times& times, Set&& events, Observer&& observe,
-                                   step_count max_attempts = default_max_attempts) {
-    return detail::times_with_events(engine, f, y, t0, times, events, observe, max_attempts);
-}
-
-/// integrate_times with events and an SDIRK pair (the cubic Hermite interpolant of the step's ends and slopes).
-template <class Method, class State, class System, class Times, class Set, class Observer,
-          std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
-[[nodiscard]] auto integrate_times(sdirk_adaptive<Method, State>& engine, System&& f, State& y,
-                                   detail::time_t_of<State> t0, const Times& times, Set&& events, Observer&& observe,
-                                   step_count max_attempts = default_max_attempts) {
+template <class Engine, class System, class Times, class Set, class Observer,
+          std::enable_if_t<detail::has_free_extension_v<Engine> && detail::is_event_set_v<Set>, int> = 0>
+[[nodiscard]] auto integrate_times(Engine& engine, System&& f, typename Engine::state_type& y,
+                                   detail::time_t_of<typename Engine::state_type> t0, const Times& times, Set&& events,
+                                   Observer&& observe, step_count max_attempts = default_max_attempts) {
     return detail::times_with_events(engine, f, y, t0, times, events, observe, max_attempts);
 }
 

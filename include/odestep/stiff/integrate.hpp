@@ -20,123 +20,102 @@
 
 namespace odestep {
 
-/// Integrates y' = f(t, y) from t0 to exactly t1 with the error-controlled Radau IIA 5 steps of `engine`
-/// (odestep::radau5: its tolerances, controller, and what it carries), and calls observe(t, y) with the
-/// initial state and after every accepted step. The result's `steps` counts the accepted steps.
+namespace detail {
+// The stiff engines' dense output for integrate_times, and its completion with the counted f: Radau's
+// collocation polynomial and the SDIRK pairs' Hermite interpolant need nothing more; the Rosenbrock pairs'
+// Hermite interpolant needs f at the step's ends. A stiff engine is one with this trait.
+template <class Engine>
+struct stiff_dense;
+template <class State>
+struct stiff_dense<radau5<State>> {
+    using type = radau5_dense<State>;
+    template <class System>
+    static status complete(type&, System&) noexcept {
+        return status::ok;
+    }
+};
+template <class Method, class State>
+struct stiff_dense<sdirk_adaptive<Method, State>> {
+    using type = sdirk_dense<State>;
+    template <class System>
+    static status complete(type&, System&) noexcept {
+        return status::ok;
+    }
+};
+template <class Method, class State>
+struct stiff_dense<rosenbrock_adaptive<Method, State>> {
+    using type = rosenbrock_dense<State>;
+    template <class System>
+    static status complete(type& dense, System& f) {
+        return dense.complete(f);
+    }
+};
+
+template <class Engine, class = void>
+struct is_stiff_engine : std::false_type {};
+template <class Engine>
+struct is_stiff_engine<Engine, std::void_t<typename stiff_dense<Engine>::type>> : std::true_type {};
+// A stiff engine (odestep::radau5, odestep::rosenbrock_adaptive, odestep::sdirk_adaptive).
+template <class Engine>
+inline constexpr bool is_stiff_engine_v = is_stiff_engine<Engine>::value;
+}  // namespace detail
+
+/// Integrates y' = f(t, y) from t0 to exactly t1 with the error-controlled steps of a stiff `engine`
+/// (odestep::radau5, odestep::rosenbrock_adaptive, odestep::sdirk_adaptive: its tolerances, controller, and
+/// what it carries), and calls observe(t, y) with the initial state and after every accepted step. The
+/// result's `steps` counts the accepted steps.
 ///
-/// Work is bounded: at most `max_attempts` attempts, hence at most 1 + radau5::rhs_evals_to_start +
-/// max_attempts * radau5::rhs_evals_per_attempt evaluations of f. Statuses, with y always the last accepted
+/// Work is bounded: at most `max_attempts` attempts, hence at most 1 + Engine::rhs_evals_to_start +
+/// max_attempts * Engine::rhs_evals_per_attempt evaluations of f. Statuses, with y always the last accepted
 /// state at the returned t: invalid_tolerance / invalid_setting (settings, or max_attempts = 0) and
 /// invalid_time (t0 or t1 not finite), nothing evaluated or observed; non_finite, singular_matrix,
-/// step_too_small (see odestep::radau5); substep_limit (max_attempts reached before t1).
-template <class State, class System, class Observer,
-          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>> && !detail::is_event_set_v<Observer>, int> = 0>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(radau5<State>& engine, System&& f, State& y,
-                                                                       detail::time_t_of<State> t0,
-                                                                       detail::time_t_of<State> t1, Observer&& observe,
-                                                                       step_count max_attempts = default_max_attempts) {
+/// step_too_small (see the engine); substep_limit (max_attempts reached before t1).
+template <class Engine, class System, class Observer,
+          std::enable_if_t<detail::is_stiff_engine_v<Engine> && !std::is_arithmetic_v<std::decay_t<Observer>> &&
+                               !detail::is_event_set_v<Observer>,
+                           int> = 0>
+[[nodiscard]] integrate_result<typename Engine::value_type> integrate_adaptive(
+    Engine& engine, System&& f, typename Engine::state_type& y, detail::time_t_of<typename Engine::state_type> t0,
+    detail::time_t_of<typename Engine::state_type> t1, Observer&& observe,
+    step_count max_attempts = default_max_attempts) {
     return detail::free_running(engine, f, y, t0, t1, observe, max_attempts);
 }
 
-/// integrate_adaptive with the Radau IIA 5 engine, without an observer.
-template <class State, class System>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(radau5<State>& engine, System&& f, State& y,
-                                                                       detail::time_t_of<State> t0,
-                                                                       detail::time_t_of<State> t1,
-                                                                       step_count max_attempts = default_max_attempts) {
-    detail::no_observer none;
-    return integrate_adaptive(engine, f, y, t0, t1, none, max_attempts);
-}
-
-/// integrate_adaptive with a Rosenbrock pair (odestep::rosenbrock_adaptive): the same contract as with the
-/// Radau IIA 5 engine, at most rhs_evals_to_start + max_attempts * rhs_evals_per_attempt evaluations of f.
-template <class Method, class State, class System, class Observer,
-          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>> && !detail::is_event_set_v<Observer>, int> = 0>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(rosenbrock_adaptive<Method, State>& engine,
-                                                                       System&& f, State& y,
-                                                                       detail::time_t_of<State> t0,
-                                                                       detail::time_t_of<State> t1, Observer&& observe,
-                                                                       step_count max_attempts = default_max_attempts) {
-    return detail::free_running(engine, f, y, t0, t1, observe, max_attempts);
-}
-
-/// integrate_adaptive with a Rosenbrock pair, without an observer.
-template <class Method, class State, class System>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(rosenbrock_adaptive<Method, State>& engine,
-                                                                       System&& f, State& y,
-                                                                       detail::time_t_of<State> t0,
-                                                                       detail::time_t_of<State> t1,
-                                                                       step_count max_attempts = default_max_attempts) {
-    detail::no_observer none;
-    return integrate_adaptive(engine, f, y, t0, t1, none, max_attempts);
-}
-
-/// integrate_adaptive with an SDIRK pair (odestep::sdirk_adaptive): the same contract as with the Radau IIA 5
-/// engine, at most 1 + rhs_evals_to_start + max_attempts * rhs_evals_per_attempt evaluations of f.
-template <class Method, class State, class System, class Observer,
-          std::enable_if_t<!std::is_arithmetic_v<std::decay_t<Observer>> && !detail::is_event_set_v<Observer>, int> = 0>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(sdirk_adaptive<Method, State>& engine,
-                                                                       System&& f, State& y,
-                                                                       detail::time_t_of<State> t0,
-                                                                       detail::time_t_of<State> t1, Observer&& observe,
-                                                                       step_count max_attempts = default_max_attempts) {
-    return detail::free_running(engine, f, y, t0, t1, observe, max_attempts);
-}
-
-/// integrate_adaptive with an SDIRK pair, without an observer.
-template <class Method, class State, class System>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate_adaptive(sdirk_adaptive<Method, State>& engine,
-                                                                       System&& f, State& y,
-                                                                       detail::time_t_of<State> t0,
-                                                                       detail::time_t_of<State> t1,
-                                                                       step_count max_attempts = default_max_attempts) {
+/// integrate_adaptive with a stiff engine, without an observer.
+template <class Engine, class System, std::enable_if_t<detail::is_stiff_engine_v<Engine>, int> = 0>
+[[nodiscard]] integrate_result<typename Engine::value_type> integrate_adaptive(
+    Engine& engine, System&& f, typename Engine::state_type& y, detail::time_t_of<typename Engine::state_type> t0,
+    detail::time_t_of<typename Engine::state_type> t1, step_count max_attempts = default_max_attempts) {
     detail::no_observer none;
     return integrate_adaptive(engine, f, y, t0, t1, none, max_attempts);
 }
 
 /// Integrates from t0 to the last of `times` (a container of T with size() and operator[], in the direction
-/// of the run and never going back) with the engine's free-running steps, and calls observe(times[i], u) with
-/// the state at every times[i]: from the step's collocation polynomial (odestep::radau5_dense, no extra
-/// evaluation of f) inside a step, the step's own state at its end. The output times do not shorten the
-/// steps. At the end y is the state at the last time; `steps` counts the accepted steps.
+/// of the run and never going back) with the stiff engine's free-running steps, and calls observe(times[i], u)
+/// with the state at every times[i]: inside a step from the step's dense output, the step's own state at its
+/// end. The output times do not shorten the steps. At the end y is the state at the last time; `steps` counts
+/// the accepted steps. The dense output:
+///   - odestep::radau5: the step's collocation polynomial (odestep::radau5_dense), no extra evaluation of f;
+///   - odestep::sdirk_adaptive: the cubic Hermite interpolant of the step's ends and slopes
+///     (odestep::sdirk_dense, order 3), no extra evaluation of f;
+///   - odestep::rosenbrock_adaptive: the cubic Hermite interpolant of the step's ends
+///     (odestep::rosenbrock_dense, order 3), which costs up to rosenbrock_dense::rhs_evals_to_complete (2)
+///     evaluations of f for each step with an output time inside it: at most rhs_evals_to_start +
+///     max_attempts * (rhs_evals_per_attempt + 2) in all.
 ///
-/// Work as integrate_adaptive. Statuses as integrate_adaptive (non_finite also when the polynomial overflows
-/// at an output time; y is then the state at the end of the step that holds it, at the returned t);
+/// Work otherwise as integrate_adaptive. Statuses as integrate_adaptive (non_finite also when the interpolant
+/// overflows at an output time; y is then the state at the end of the step that holds it, at the returned t);
 /// invalid_time also when a time is not finite, lies before t0 or before the time before it (nothing
 /// evaluated or observed). With no times the call does nothing and returns ok.
-template <class State, class System, class Times, class Observer>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate_times(radau5<State>& engine, System&& f, State& y,
-                                                                    detail::time_t_of<State> t0, const Times& times,
-                                                                    Observer&& observe,
-                                                                    step_count max_attempts = default_max_attempts) {
-    radau5_dense<State> dense;
-    return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense, [](auto&) { return status::ok; });
-}
-
-/// integrate_times with a Rosenbrock pair (odestep::rosenbrock_adaptive): the same contract as with the Radau IIA 5
-/// engine; the state inside a step is the cubic Hermite interpolant of the step's ends (odestep::rosenbrock_dense,
-/// order 3), which costs up to rosenbrock_dense::rhs_evals_to_complete (2) evaluations of f for each step with
-/// an output time inside it: at most rhs_evals_to_start + max_attempts * (rhs_evals_per_attempt + 2) in all.
-template <class Method, class State, class System, class Times, class Observer>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate_times(rosenbrock_adaptive<Method, State>& engine,
-                                                                    System&& f, State& y, detail::time_t_of<State> t0,
-                                                                    const Times& times, Observer&& observe,
-                                                                    step_count max_attempts = default_max_attempts) {
-    rosenbrock_dense<State> dense;
+template <class Engine, class System, class Times, class Observer,
+          std::enable_if_t<detail::is_stiff_engine_v<Engine>, int> = 0>
+[[nodiscard]] integrate_result<typename Engine::value_type> integrate_times(
+    Engine& engine, System&& f, typename Engine::state_type& y, detail::time_t_of<typename Engine::state_type> t0,
+    const Times& times, Observer&& observe, step_count max_attempts = default_max_attempts) {
+    using dense_of = detail::stiff_dense<Engine>;
+    typename dense_of::type dense;
     return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense,
-                               [&](auto& counted) { return dense.complete(counted); });
-}
-
-/// integrate_times with an SDIRK pair (odestep::sdirk_adaptive): the same contract as with the Radau IIA 5
-/// engine; the state inside a step is the cubic Hermite interpolant of the step's ends and slopes
-/// (odestep::sdirk_dense, order 3, no extra evaluation of f).
-template <class Method, class State, class System, class Times, class Observer>
-[[nodiscard]] integrate_result<value_type_t<State>> integrate_times(sdirk_adaptive<Method, State>& engine, System&& f,
-                                                                    State& y, detail::time_t_of<State> t0,
-                                                                    const Times& times, Observer&& observe,
-                                                                    step_count max_attempts = default_max_attempts) {
-    sdirk_dense<State> dense;
-    return detail::sampled_run(engine, f, y, t0, times, observe, max_attempts, dense, [](auto&) { return status::ok; });
+                               [&](auto& counted) { return dense_of::complete(dense, counted); });
 }
 
 }  // namespace odestep

@@ -128,7 +128,10 @@ private:
 /// from a point other than the one the engine stopped at (another y, bit for bit, or another t) starts
 /// afresh there (f, Jacobian, factorization), keeping only the step size.
 template <class State>
-class radau5 {
+class radau5 : public newton_engine_settings<radau5<State>, State> {
+    using settings = newton_engine_settings<radau5, State>;
+    friend class engine_settings<radau5, State, detail::stiff_step_control<value_type_t<State>>>;
+
 public:
     using state_type = State;                ///< the state, std::array<T, N>
     using value_type = value_type_t<State>;  ///< its scalar T
@@ -165,41 +168,10 @@ public:
         : radau5(tolerances<State>::uniform(detail::default_tolerance<T>(), detail::default_tolerance<T>())) {}
     /// The given tolerances and controller settings (checked by settings_status() before any use).
     explicit radau5(const tolerances<State>& tol, const step_control<T>& control = radau5_control<T>()) noexcept
-        : tol_(tol), control_(control) {
-        transform_tolerances();
+        : settings(tol, control) {
+        tolerance_changed();
     }
 
-    /// status::invalid_tolerance, status::invalid_setting, or ok.
-    status settings_status() const noexcept {
-        const status s = tol_.check();
-        if (s != status::ok) return s;
-        if (!(theta_keep_ > T(0) && theta_keep_ < T(1))) return status::invalid_setting;
-        return control_.check();
-    }
-    /// Newton's contraction rate theta below which an accepted step keeps its Jacobian for the next one
-    /// (radau5.f's WORK(3)); default 0.1, the value radau5.f recommends when a Jacobian is costly (it
-    /// suggests 0.001 for small systems: more Jacobians, fewer iterations). Must lie in (0, 1).
-    T jacobian_reuse_rate() const noexcept { return theta_keep_; }
-    /// Sets the rate of jacobian_reuse_rate() (checked by the next call).
-    void set_jacobian_reuse_rate(T theta) noexcept { theta_keep_ = theta; }
-    /// The tolerances, as given.
-    const tolerances<State>& tolerance() const noexcept { return tol_; }
-    /// The controller's settings (alpha and beta are not used).
-    const step_control<T>& control() const noexcept { return control_; }
-    /// Replaces the tolerances (checked by the next call).
-    void set_tolerance(const tolerances<State>& tol) noexcept {
-        tol_ = tol;
-        transform_tolerances();
-    }
-    /// Replaces the controller's settings (checked by the next call).
-    void set_control(const step_control<T>& control) noexcept { control_ = control; }
-
-    /// |h| of the next attempt; 0 before the first (then odestep::initial_step chooses it).
-    T step_size() const noexcept { return ctl_.h; }
-    /// Sets |h| of the next attempt (0: estimate it); a negative or non-finite value is ignored.
-    void set_step_size(T h) noexcept {
-        if (detail::is_finite(h) && h >= T(0)) ctl_.h = h;
-    }
     /// Forgets everything carried (step size, Jacobian, factorizations, polynomial, controller memory): the
     /// next call starts afresh. The counts stay.
     void restart() noexcept {
@@ -207,10 +179,6 @@ public:
         point_valid_ = false;
     }
 
-    /// Accepted steps since construction.
-    step_count accepted_steps() const noexcept { return accepted_; }
-    /// Rejected attempts (error too large, Newton failed, singular matrix, NaN in a stage) since construction.
-    step_count rejected_steps() const noexcept { return ctl_.rejected; }
     /// Jacobian evaluations since construction.
     step_count jacobian_evaluations() const noexcept { return jacobians_; }
     /// Decompositions since construction, each one real (E1) and one complex (E2) LU factorization.
@@ -228,33 +196,26 @@ public:
     template <class System, class Sink = detail::no_step_sink>
     status attempt(System& f, T& t, State& y, T t_end, bool& accepted, Sink&& sink = Sink{}) {
         accepted = false;
-        const T span = t_end - t;
-        if (span == T(0)) {
+        detail::attempt_plan<T> p(t, t_end);
+        if (p.span == T(0)) {
             accepted = true;
             return status::ok;
         }
-        const T dir = span > T(0) ? T(1) : T(-1);
-        const T rem = detail::abs_value(span);
+        const T dir = p.dir;
         status s = prepare_point(f, t, y);
         if (s != status::ok) return s;
-        T mag = ctl_.h;
-        if (!(mag > T(0))) {
-            T limit = rem;
-            if (control_.max_step > T(0) && control_.max_step < limit) limit = control_.max_step;
-            mag = detail::abs_value(initial_step(f, t, y, f0_, estimate_order - 1, tol_, limit, dir));
-            if (!(mag > T(0))) return status::non_finite;
-        }
-        if (control_.max_step > T(0) && mag > control_.max_step) mag = control_.max_step;
-        const bool stretch_ok = !(control_.max_step > T(0)) || rem <= control_.max_step;
-        const bool last = mag >= rem || (mag + mag / T(100) >= rem && stretch_ok);
-        T h = last ? span : dir * mag;
+        p.mag = ctl_.h;
+        if (!(p.mag > T(0)) && !p.estimate(f, t, y, f0_, estimate_order, tol_, control_)) return status::non_finite;
+        p.bound(control_);
+        const bool last = p.last;
+        const T mag = p.mag;
+        T h = last ? p.span : dir * mag;
         if (!last && ctl_.keep_lu && lu_valid_ && h_lu_ * dir > T(0)) {
             // radau5.f: a step 1 to 1.2 times the factored one, with Newton fast, keeps the factorization.
             const T qt = mag / detail::abs_value(h_lu_);
-            if (qt >= T(1) && qt <= T(6) / T(5) && detail::abs_value(h_lu_) < rem) h = h_lu_;
+            if (qt >= T(1) && qt <= T(6) / T(5) && detail::abs_value(h_lu_) < p.rem) h = h_lu_;
         }
-        if (!last && !(detail::abs_value(h) > T(10) * std::numeric_limits<T>::epsilon() * detail::abs_value(t)))
-            return status::step_too_small;
+        if (p.unresolved(h, t)) return status::step_too_small;
 
         if (ctl_.need_jacobian) {
             ++jacobians_;
@@ -302,7 +263,6 @@ public:
         const T fac1 = co::gamma / h;
         const T alphn = co::alpha / h;
         const T betan = co::beta / h;
-        const T eps = std::numeric_limits<T>::epsilon();
         const T stage_time[3] = {t + tab.c[0] * h, t + tab.c[1] * h, last ? t_end : t + h};
         detail::theta_monitor<T> newton(faccon_, theta_keep_, fnewt_, max_newton_iterations);
         for (;;) {
@@ -365,8 +325,7 @@ public:
                 e = scaled_norm(err, y, newton_tol_);
             }
         }
-        if (!(e <= std::numeric_limits<T>::max())) e = T(1) / eps;  // NaN or Inf: the largest shrink
-        if (e < T(1e-10f)) e = T(1e-10f);
+        e = detail::bounded_error(e);
 
         // The next step size (radau5.f): the safety lowered by Newton's iterations, within [0.2, 8] times h.
         const T habs = detail::abs_value(h);
@@ -407,7 +366,7 @@ public:
         detail::assign(y, y_new);
         t = t_new;
         accepted = true;
-        ++accepted_;
+        ++ctl_.accepted;
         return status::ok;
     }
 
@@ -470,7 +429,7 @@ private:
         return true;
     }
 
-    void transform_tolerances() noexcept {
+    void tolerance_changed() noexcept {
         T smallest = T(0);
         for (std::size_t i = 0; i < N; ++i) {
             const T r = tol_.rtol[i];
@@ -484,23 +443,18 @@ private:
                 newton_tol_.atol[i] = tol_.atol[i];
             }
         }
-        const T eps = std::numeric_limits<T>::epsilon();
-        fnewt_ = T(3) / T(100);
-        if (smallest > T(0)) {
-            const T root = std::sqrt(smallest);
-            fnewt_ = detail::max_value(T(10) * eps / smallest, root < fnewt_ ? root : fnewt_);
-        }
+        fnewt_ = detail::newton_kappa(smallest);
     }
 
-    tolerances<State> tol_;
-    step_control<T> control_;
+    using settings::control_;
+    using settings::ctl_;
+    using settings::theta_keep_;
+    using settings::tol_;
     tolerances<State> newton_tol_{};
     T fnewt_ = T(3) / T(100);
-    T theta_keep_ = T(1) / T(10);  // radau5.f's THET: Newton's rate below which the Jacobian is kept
 
-    detail::stiff_step_control<T> ctl_{};  // the step size, the Jacobian policy, the rejections
-    T h_lu_ = T(0);                        // the signed h of the factorization
-    T h_old_ = T(1);                       // the signed h of the last accepted step (its polynomial)
+    T h_lu_ = T(0);   // the signed h of the factorization
+    T h_old_ = T(1);  // the signed h of the last accepted step (its polynomial)
     T faccon_ = T(1);
     T t_point_ = T(0);
     State y_point_{};
@@ -515,7 +469,6 @@ private:
     bool f0_valid_ = false;
     bool lu_valid_ = false;
     bool polynomial_valid_ = false;
-    step_count accepted_ = 0;
     step_count jacobians_ = 0;
     step_count decompositions_ = 0;
     step_count iterations_ = 0;

@@ -91,7 +91,10 @@ private:
 /// max_failures_in_a_row times in a row; then its status is returned. Every failure leaves y and t as they
 /// were. What it carries: the step size, the controller's memory; no heap, no static state.
 template <class Method, class State>
-class rosenbrock_adaptive {
+class rosenbrock_adaptive
+    : public engine_settings<rosenbrock_adaptive<Method, State>, State, detail::pi_memory<value_type_t<State>>> {
+    using settings = engine_settings<rosenbrock_adaptive, State, detail::pi_memory<value_type_t<State>>>;
+
 public:
     using state_type = State;                        ///< the state, std::array<T, N>
     using value_type = value_type_t<State>;          ///< its scalar T
@@ -128,38 +131,10 @@ public:
               tolerances<State>::uniform(detail::default_tolerance<T>(), detail::default_tolerance<T>())) {}
     /// The given tolerances and controller settings (checked by settings_status() before any use).
     explicit rosenbrock_adaptive(const tolerances<State>& tol, const step_control<T>& control = {}) noexcept
-        : tol_(tol), control_(control) {}
+        : settings(tol, control) {}
 
-    /// status::invalid_tolerance, status::invalid_setting, or ok.
-    status settings_status() const noexcept {
-        const status s = tol_.check();
-        return s != status::ok ? s : control_.check();
-    }
-    /// The tolerances.
-    const tolerances<State>& tolerance() const noexcept { return tol_; }
-    /// The controller's settings.
-    const step_control<T>& control() const noexcept { return control_; }
-    /// Replaces the tolerances (checked by the next call).
-    void set_tolerance(const tolerances<State>& tol) noexcept { tol_ = tol; }
-    /// Replaces the controller's settings (checked by the next call).
-    void set_control(const step_control<T>& control) noexcept { control_ = control; }
-    /// |h| of the next attempt; 0 before the first (then odestep::initial_step chooses it).
-    T step_size() const noexcept { return h_; }
-    /// Sets |h| of the next attempt (0: estimate it); a negative or non-finite value is ignored.
-    void set_step_size(T h) noexcept {
-        if (detail::is_finite(h) && h >= T(0)) h_ = h;
-    }
     /// Forgets the step size and the controller's memory.
-    void restart() noexcept {
-        h_ = T(0);
-        err_prev_ = T(1) / T(10000);
-        after_rejection_ = false;
-        failures_ = 0;
-    }
-    /// Accepted steps since construction.
-    step_count accepted_steps() const noexcept { return accepted_; }
-    /// Rejected attempts since construction.
-    step_count rejected_steps() const noexcept { return rejected_; }
+    void restart() noexcept { ctl_.restart(); }
     /// Jacobians formed since construction (the system's own or by differences): one per step tried.
     step_count jacobian_evaluations() const noexcept { return tried_; }
     /// LU factorizations since construction: one per step tried.
@@ -172,78 +147,50 @@ public:
     template <class System, class Sink = detail::no_step_sink>
     status attempt(System& f, T& t, State& y, T t_end, bool& accepted, Sink&& sink = Sink{}) {
         accepted = false;
-        const T span = t_end - t;
-        if (span == T(0)) {
+        detail::attempt_plan<T> p(t, t_end);
+        if (p.span == T(0)) {
             accepted = true;
             return status::ok;
         }
-        const T dir = span > T(0) ? T(1) : T(-1);
-        const T rem = detail::abs_value(span);
-        T mag = h_;
-        if (!(mag > T(0))) {
+        p.mag = ctl_.h;
+        if (!(p.mag > T(0))) {
             State f0;
             detail::evaluate(f, t, y, f0);
             if (!detail::all_finite(f0)) return status::non_finite;
-            T limit = rem;
-            if (control_.max_step > T(0) && control_.max_step < limit) limit = control_.max_step;
-            mag = detail::abs_value(initial_step(f, t, y, f0, estimate_order - 1, tol_, limit, dir));
-            if (!(mag > T(0))) return status::non_finite;
+            if (!p.estimate(f, t, y, f0, estimate_order, tol_, control_)) return status::non_finite;
         }
-        if (control_.max_step > T(0) && mag > control_.max_step) mag = control_.max_step;
-        const bool stretch_ok = !(control_.max_step > T(0)) || rem <= control_.max_step;
-        const bool last = mag >= rem || (mag + mag / T(100) >= rem && stretch_ok);
-        const T h = last ? span : dir * mag;
-        if (!last && !(detail::abs_value(h) > T(10) * std::numeric_limits<T>::epsilon() * detail::abs_value(t)))
-            return status::step_too_small;
+        p.bound(control_);
+        const bool last = p.last;
+        const T h = last ? p.span : p.dir * p.mag;
+        if (p.unresolved(h, t)) return status::step_too_small;
         State y_new = y;
         State err{};
         ++tried_;
         const status s = stepper_type{}.step(f, y_new, t, h, err);
-        const T habs = detail::abs_value(h);
-        if (s != status::ok) {
-            ++rejected_;
-            after_rejection_ = true;
-            h_ = habs / T(2);
-            if (++failures_ >= max_failures_in_a_row) {
-                failures_ = 0;
-                return s;
-            }
-            return h_ > T(0) ? status::ok : status::step_too_small;
-        }
+        if (s != status::ok) return ctl_.retry_smaller(h, s, max_failures_in_a_row);
         T e = scaled_error_norm(err, y, y_new, tol_);
         if (!(e <= std::numeric_limits<T>::max())) e = std::numeric_limits<T>::max();
-        const pi_gains<T> g = gains_for(control_, estimate_order);
+        const T habs = detail::abs_value(h);
         if (e <= T(1)) {
-            T next = habs * step_factor(control_, g, estimate_order, e, err_prev_, after_rejection_);
-            if (last && !(next < habs) && mag > next) next = mag;
-            h_ = next > T(0) ? next : habs;
-            err_prev_ = detail::max_value(e, T(1) / T(10000));
-            after_rejection_ = false;
-            failures_ = 0;
+            T next = ctl_.next_step(control_, estimate_order, habs, e);
+            // A step shortened to land on t_end says nothing against the size planned, unless it asked for less.
+            if (last && !(next < habs) && p.mag > next) next = p.mag;
+            ctl_.accept(next, habs, e);
             sink(static_cast<const T&>(t), static_cast<const T&>(h), static_cast<const State&>(y),
                  static_cast<const State&>(y_new));
             detail::assign(y, y_new);
             t = last ? t_end : t + h;
             accepted = true;
-            ++accepted_;
-        } else {
-            h_ = habs * step_factor(control_, g, estimate_order, e, err_prev_, after_rejection_);
-            after_rejection_ = true;
-            ++rejected_;
-            if (!(h_ > T(0))) return status::step_too_small;
+            ++ctl_.accepted;
+            return status::ok;
         }
-        return status::ok;
+        return ctl_.reject_error(control_, estimate_order, habs, e);
     }
 
 private:
-    tolerances<State> tol_;
-    step_control<T> control_;
-    T h_ = T(0);
-    T err_prev_ = T(1) / T(10000);
-    bool after_rejection_ = false;
-    std::size_t failures_ = 0;
-    step_count accepted_ = 0;
-    step_count rejected_ = 0;
+    using settings::control_;
+    using settings::ctl_;
+    using settings::tol_;
     step_count tried_ = 0;
 };
 

@@ -98,7 +98,10 @@ private:
 /// Memory: J and E (2 N^2 values), the slope at the current point, the step size and the controller's
 /// memory; no heap, no static state. A call from another point than the one it stopped at starts afresh.
 template <class Method, class State>
-class sdirk_adaptive {
+class sdirk_adaptive : public newton_engine_settings<sdirk_adaptive<Method, State>, State> {
+    using settings = newton_engine_settings<sdirk_adaptive, State>;
+    friend class engine_settings<sdirk_adaptive, State, detail::stiff_step_control<value_type_t<State>>>;
+
 public:
     using state_type = State;                ///< the state, std::array<T, N>
     using value_type = value_type_t<State>;  ///< its scalar T
@@ -145,48 +148,16 @@ public:
         : sdirk_adaptive(tolerances<State>::uniform(detail::default_tolerance<T>(), detail::default_tolerance<T>())) {}
     /// The given tolerances and controller settings (checked by settings_status() before any use).
     explicit sdirk_adaptive(const tolerances<State>& tol, const step_control<T>& control = radau5_control<T>()) noexcept
-        : tol_(tol), control_(control) {
-        newton_tolerance();
+        : settings(tol, control) {
+        tolerance_changed();
     }
 
-    /// status::invalid_tolerance, status::invalid_setting, or ok.
-    status settings_status() const noexcept {
-        const status s = tol_.check();
-        if (s != status::ok) return s;
-        if (!(theta_keep_ > T(0) && theta_keep_ < T(1))) return status::invalid_setting;
-        return control_.check();
-    }
-    /// Newton's contraction rate below which an accepted step keeps its Jacobian (as radau5's); default 0.1.
-    T jacobian_reuse_rate() const noexcept { return theta_keep_; }
-    /// Sets the rate of jacobian_reuse_rate() (checked by the next call).
-    void set_jacobian_reuse_rate(T theta) noexcept { theta_keep_ = theta; }
-    /// The tolerances.
-    const tolerances<State>& tolerance() const noexcept { return tol_; }
-    /// The controller's settings (alpha and beta are not used).
-    const step_control<T>& control() const noexcept { return control_; }
-    /// Replaces the tolerances (checked by the next call).
-    void set_tolerance(const tolerances<State>& tol) noexcept {
-        tol_ = tol;
-        newton_tolerance();
-    }
-    /// Replaces the controller's settings (checked by the next call).
-    void set_control(const step_control<T>& control) noexcept { control_ = control; }
-    /// |h| of the next attempt; 0 before the first (then odestep::initial_step chooses it).
-    T step_size() const noexcept { return ctl_.h; }
-    /// Sets |h| of the next attempt (0: estimate it); a negative or non-finite value is ignored.
-    void set_step_size(T h) noexcept {
-        if (detail::is_finite(h) && h >= T(0)) ctl_.h = h;
-    }
     /// Forgets everything carried (step size, Jacobian, factorization, controller memory). The counts stay.
     void restart() noexcept {
         ctl_.h = T(0);
         point_valid_ = false;
     }
 
-    /// Accepted steps since construction.
-    step_count accepted_steps() const noexcept { return accepted_; }
-    /// Rejected attempts since construction.
-    step_count rejected_steps() const noexcept { return ctl_.rejected; }
     /// Jacobian evaluations since construction.
     step_count jacobian_evaluations() const noexcept { return jacobians_; }
     /// LU factorizations of E since construction.
@@ -202,33 +173,26 @@ public:
     template <class System, class Sink = detail::no_step_sink>
     status attempt(System& f, T& t, State& y, T t_end, bool& accepted, Sink&& sink = Sink{}) {
         accepted = false;
-        const T span = t_end - t;
-        if (span == T(0)) {
+        detail::attempt_plan<T> p(t, t_end);
+        if (p.span == T(0)) {
             accepted = true;
             return status::ok;
         }
-        const T dir = span > T(0) ? T(1) : T(-1);
-        const T rem = detail::abs_value(span);
+        const T dir = p.dir;
         status s = prepare_point(f, t, y);
         if (s != status::ok) return s;
-        T mag = ctl_.h;
-        if (!(mag > T(0))) {
-            T limit = rem;
-            if (control_.max_step > T(0) && control_.max_step < limit) limit = control_.max_step;
-            mag = detail::abs_value(initial_step(f, t, y, slope_, estimate_order - 1, tol_, limit, dir));
-            if (!(mag > T(0))) return status::non_finite;
-        }
-        if (control_.max_step > T(0) && mag > control_.max_step) mag = control_.max_step;
-        const bool stretch_ok = !(control_.max_step > T(0)) || rem <= control_.max_step;
-        const bool last = mag >= rem || (mag + mag / T(100) >= rem && stretch_ok);
-        T h = last ? span : dir * mag;
+        p.mag = ctl_.h;
+        if (!(p.mag > T(0)) && !p.estimate(f, t, y, slope_, estimate_order, tol_, control_)) return status::non_finite;
+        p.bound(control_);
+        const bool last = p.last;
+        const T mag = p.mag;
+        T h = last ? p.span : dir * mag;
         if (!last && ctl_.keep_lu && lu_valid_ && h_lu_ * dir > T(0)) {
             // as radau5: a step 1 to 1.2 times the factored one, with Newton fast, keeps the factorization
             const T qt = mag / detail::abs_value(h_lu_);
-            if (qt >= T(1) && qt <= T(6) / T(5) && detail::abs_value(h_lu_) < rem) h = h_lu_;
+            if (qt >= T(1) && qt <= T(6) / T(5) && detail::abs_value(h_lu_) < p.rem) h = h_lu_;
         }
-        if (!last && !(detail::abs_value(h) > T(10) * std::numeric_limits<T>::epsilon() * detail::abs_value(t)))
-            return status::step_too_small;
+        if (p.unresolved(h, t)) return status::step_too_small;
 
         if (ctl_.need_jacobian) {
             if constexpr (jacobian_rhs_evals_v<System, State> != 0) {
@@ -315,10 +279,7 @@ public:
             err[n] = d / hg;  // E x = d / (h gamma) gives x = (I - h gamma J)^-1 d
         }
         linalg::lu_solve(e_, piv_, err);
-        T e = scaled_error_norm(err, y, y_new, tol_);
-        const T eps = std::numeric_limits<T>::epsilon();
-        if (!(e <= std::numeric_limits<T>::max())) e = T(1) / eps;  // NaN or Inf: the largest shrink
-        if (e < T(1e-10f)) e = T(1e-10f);
+        const T e = detail::bounded_error(scaled_error_norm(err, y, y_new, tol_));
 
         const T habs = detail::abs_value(h);
         const T quot = detail::hairer_quotient(control_, e, estimate_order, most, max_newton_iterations);
@@ -345,7 +306,7 @@ public:
         detail::assign(y, y_new);
         t = t_new;
         accepted = true;
-        ++accepted_;
+        ++ctl_.accepted;
         return status::ok;
     }
 
@@ -381,26 +342,21 @@ private:
     }
 
     // Newton's tolerance kappa from the smallest positive rtol, as radau5's.
-    void newton_tolerance() noexcept {
+    void tolerance_changed() noexcept {
         T smallest = T(0);
         for (std::size_t i = 0; i < N; ++i) {
             const T r = tol_.rtol[i];
             if (r > T(0) && detail::is_finite(r) && (smallest == T(0) || r < smallest)) smallest = r;
         }
-        const T eps = std::numeric_limits<T>::epsilon();
-        fnewt_ = T(3) / T(100);
-        if (smallest > T(0)) {
-            const T root = std::sqrt(smallest);
-            fnewt_ = detail::max_value(T(10) * eps / smallest, root < fnewt_ ? root : fnewt_);
-        }
+        fnewt_ = detail::newton_kappa(smallest);
     }
 
-    tolerances<State> tol_;
-    step_control<T> control_;
+    using settings::control_;
+    using settings::ctl_;
+    using settings::theta_keep_;
+    using settings::tol_;
     T fnewt_ = T(3) / T(100);
-    T theta_keep_ = T(1) / T(10);
 
-    detail::stiff_step_control<T> ctl_{};  // the step size, the Jacobian policy, the rejections (radau5's)
     T h_lu_ = T(0);
     T faccon_ = T(1);
     T t_point_ = T(0);
@@ -416,7 +372,6 @@ private:
     bool point_valid_ = false;
     bool slope_exact_ = false;
     bool lu_valid_ = false;
-    step_count accepted_ = 0;
     step_count jacobians_ = 0;
     step_count decompositions_ = 0;
     step_count iterations_ = 0;

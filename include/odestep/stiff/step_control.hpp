@@ -5,6 +5,7 @@
 #ifndef ODESTEP_STIFF_STEP_CONTROL_HPP
 #define ODESTEP_STIFF_STEP_CONTROL_HPP
 
+#include <cmath>
 #include <cstddef>
 #include <limits>
 
@@ -15,30 +16,18 @@
 
 namespace odestep::detail {
 
-/// The time a stiff engine stopped at, as a caller's grid gives it back: equal within a few rounding errors
-/// (t0 + n dt against the engine's t + dt), so a call on the next interval continues with what it carries.
-template <class T>
-bool same_point_time(T a, T b) noexcept {
-    const T d = abs_value(a - b);
-    return d <= T(4) * std::numeric_limits<T>::epsilon() * (abs_value(a) + abs_value(b));
-}
-
 /// What a Newton-based stiff engine carries between attempts for its step size and its Jacobian, and the
 /// three ways an attempt ends: rejected with a smaller step (Newton failed, singular matrix, NaN stages),
 /// rejected by the error test, accepted (radau5.f's logic, shared by radau5 and sdirk_adaptive).
 template <class T>
-struct stiff_step_control {
-    T h = T(0);                   ///< |h| of the next attempt; 0: estimate it
+struct stiff_step_control : step_memory<T> {
     T h_acc = T(0);               ///< Gustafsson's memory: the last accepted |h| ...
     T err_acc = T(1);             ///< ... and its error norm (at least 1e-2)
-    std::size_t failures = 0;     ///< singular matrices or NaN stages in a row
     bool need_jacobian = true;    ///< evaluate J before the next attempt
     bool jacobian_fresh = false;  ///< J was evaluated at the current point
     bool keep_lu = false;         ///< Newton was fast: a step 1 to 1.2 times the factored one keeps its LU
     bool first = true;            ///< no step accepted from this point's run yet
-    bool rejected_last = false;   ///< the last attempt was rejected
     bool have_accepted = false;   ///< Gustafsson's memory is set
-    step_count rejected = 0;      ///< rejected attempts since construction
 
     /// A start from a new point: everything but the step size and the counts forgotten.
     void new_point() noexcept {
@@ -46,35 +35,27 @@ struct stiff_step_control {
         jacobian_fresh = false;
         keep_lu = false;
         first = true;
-        rejected_last = false;
+        this->rejected_last = false;
         have_accepted = false;
-        failures = 0;
+        this->failures = 0;
     }
     /// A rejected attempt of size h: the next one is |h| factor, with a fresh Jacobian unless this one was.
     status reject(T step, T factor) noexcept {
-        ++rejected;
-        rejected_last = true;
         keep_lu = false;
         need_jacobian = !jacobian_fresh;
-        h = abs_value(step) * factor;
-        if (!(h > T(0))) return status::step_too_small;
-        return status::ok;
+        return this->shrink(step, factor);
     }
-    /// radau5.f's "unexpected step rejection": h halved. `failure` (singular_matrix, non_finite) is returned
-    /// once it has happened max_failures times in a row; ok (Newton diverged or reached its cap) never ends
-    /// the attempts by itself (the caller's attempt cap bounds them).
+    /// radau5.f's "unexpected step rejection" (step_memory::retry_smaller: h halved, `failure` returned
+    /// after max_failures in a row), with a fresh Jacobian unless this one was.
     status retry_smaller(T step, status failure, std::size_t max_failures) noexcept {
-        if (failure != status::ok && ++failures >= max_failures) {
-            failures = 0;
-            (void)reject(step, T(1) / T(2));
-            return failure;
-        }
-        return reject(step, T(1) / T(2));
+        keep_lu = false;
+        need_jacobian = !jacobian_fresh;
+        return step_memory<T>::retry_smaller(step, failure, max_failures);
     }
     /// Rejected by the error test: the next |h| is |h| / quot, or a tenth of |h| at a point's first step.
     void reject_error(T habs, T quot) noexcept {
         (void)reject(habs, T(1));
-        h = first ? habs / T(10) : habs / quot;
+        this->h = first ? habs / T(10) : habs / quot;
     }
     /// Accepted with error norm err and quotient quot (hairer_quotient): the next |h| from the larger of quot
     /// and Gustafsson's quotient, within max_step, not above |h| after a rejection, and not below the size
@@ -88,19 +69,79 @@ struct stiff_step_control {
         err_acc = max_value(T(1) / T(100), err);
         T hnew = habs / quot;
         if (c.max_step > T(0) && hnew > c.max_step) hnew = c.max_step;
-        if (rejected_last && hnew > habs) hnew = habs;
+        if (this->rejected_last && hnew > habs) hnew = habs;
         // A step shortened to land on t_end says nothing against the size planned, unless it asked for less.
         if (last && !(hnew < habs) && planned > hnew) hnew = planned;
-        h = hnew > T(0) ? hnew : habs;
-        rejected_last = false;
+        this->h = hnew > T(0) ? hnew : habs;
+        this->rejected_last = false;
         first = false;
         keep_lu = theta <= theta_keep;
         need_jacobian = theta > theta_keep;
         jacobian_fresh = false;
-        failures = 0;
+        this->failures = 0;
     }
 };
 
+/// Newton's tolerance kappa = max(10 eps / rtol, min(0.03, sqrt(rtol))) from the smallest positive rtol
+/// (radau5.f's FNEWT; 0.03 when there is none).
+template <class T>
+T newton_kappa(T smallest_rtol) noexcept {
+    T kappa = T(3) / T(100);
+    if (smallest_rtol > T(0)) {
+        const T root = std::sqrt(smallest_rtol);
+        kappa = max_value(T(10) * std::numeric_limits<T>::epsilon() / smallest_rtol, root < kappa ? root : kappa);
+    }
+    return kappa;
+}
+
+/// The error norm as Hairer's stiff codes use it: NaN or Inf as 1 / eps (the largest shrink), at least 1e-10.
+template <class T>
+T bounded_error(T e) noexcept {
+    if (!(e <= std::numeric_limits<T>::max())) e = T(1) / std::numeric_limits<T>::epsilon();
+    if (e < T(1e-10f)) e = T(1e-10f);
+    return e;
+}
+
 }  // namespace odestep::detail
+
+namespace odestep {
+
+/// \brief The settings of the Newton-based stiff engines (odestep::radau5, odestep::sdirk_adaptive): those of
+/// odestep::engine_settings and Newton's contraction rate below which an accepted step keeps its Jacobian.
+template <class Engine, class State>
+class newton_engine_settings : public engine_settings<Engine, State, detail::stiff_step_control<value_type_t<State>>> {
+    using base = engine_settings<Engine, State, detail::stiff_step_control<value_type_t<State>>>;
+
+public:
+    using value_type = value_type_t<State>;  ///< the scalar T
+
+private:
+    using T = value_type;
+
+public:
+    /// status::invalid_tolerance, status::invalid_setting (a controller setting, or jacobian_reuse_rate()
+    /// outside (0, 1)), or ok.
+    status settings_status() const noexcept {
+        const status s = this->tol_.check();
+        if (s != status::ok) return s;
+        if (!(theta_keep_ > T(0) && theta_keep_ < T(1))) return status::invalid_setting;
+        return this->control_.check();
+    }
+    /// Newton's contraction rate theta below which an accepted step keeps its Jacobian for the next one
+    /// (radau5.f's WORK(3)); default 0.1, the value radau5.f recommends when a Jacobian is costly (it
+    /// suggests 0.001 for small systems: more Jacobians, fewer iterations). Must lie in (0, 1).
+    T jacobian_reuse_rate() const noexcept { return theta_keep_; }
+    /// Sets the rate of jacobian_reuse_rate() (checked by the next call).
+    void set_jacobian_reuse_rate(T theta) noexcept { theta_keep_ = theta; }
+
+protected:
+    /// The given tolerances and controller settings (checked by settings_status() before any use).
+    newton_engine_settings(const tolerances<State>& tol, const step_control<T>& control) noexcept
+        : base(tol, control) {}
+
+    T theta_keep_ = T(1) / T(10);  ///< radau5.f's THET: Newton's rate below which the Jacobian is kept
+};
+
+}  // namespace odestep
 
 #endif
