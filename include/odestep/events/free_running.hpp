@@ -532,7 +532,7 @@ event_integrate_result<value_type_t<State>, Set::size> free_running_events(Engin
         if (out.failure != status::ok) return finish(out.failure, t, steps, no_event);
     }
     if (t != t1) return finish(status::substep_limit, t, steps, no_event);
-    return finish(status::ok, t, steps, no_event);
+    return finish(status::ok, t1, steps, no_event);  // t1 itself: an empty run from -0.0 to +0.0 ends on +0.0
 }
 
 // A const set runs on a copy (as integrate's does): its g and actions are called as non-const.
