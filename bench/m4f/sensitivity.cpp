@@ -27,7 +27,8 @@ struct oscillators_t {
 };
 struct oscillators_jacobian {
     void operator()(float, const State&, Jac& j) const {
-        j = {{{0.0f, 0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 0.0f, 1.0f}, {-2.0f, 1.0f, 0.0f, 0.0f}, {1.0f, -2.0f, 0.0f, 0.0f}}};
+        j = {
+            {{0.0f, 0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 0.0f, 1.0f}, {-2.0f, 1.0f, 0.0f, 0.0f}, {1.0f, -2.0f, 0.0f, 0.0f}}};
     }
 };
 struct springs_jacobian {
@@ -39,13 +40,17 @@ struct with_phi {
     Jac phi;
 };
 [[maybe_unused]] void start(with_phi& c) { c = {y0, {}}; }
-[[maybe_unused]] result_t result(const with_phi& c) { return {c.y[0], c.y[1], c.y[2], c.y[3], c.phi[0][0], c.phi[2][1]}; }
+[[maybe_unused]] result_t result(const with_phi& c) {
+    return {c.y[0], c.y[1], c.y[2], c.y[3], c.phi[0][0], c.phi[2][1]};
+}
 struct newtonian_phi {
     vec2 x, v;
     Phase phi;
 };
 [[maybe_unused]] void start(newtonian_phi& c) { c = {x0, v0, {}}; }
-[[maybe_unused]] result_t result(const newtonian_phi& c) { return {c.x[0], c.x[1], c.v[0], c.v[1], c.phi[0][0], c.phi[2][1]}; }
+[[maybe_unused]] result_t result(const newtonian_phi& c) {
+    return {c.x[0], c.x[1], c.v[0], c.v[1], c.phi[0][0], c.phi[2][1]};
+}
 
 // Phi by forward differences of N + 1 plain steps: (step(y + h e_j) - step(y)) / h.
 template <class Stepper, class F>
@@ -68,8 +73,7 @@ int differences(const F& f, with_phi& c, float t, float dt) {
 using Plain = o::rk4<State>;
 using Transition = o::rk4_transition<State>;
 constexpr int first = 50;
-const char* const names[4] = {"rk4 (N = 4)", "rk4_transition, hand J", "rk4_transition, dual J",
-                              "rk4, Phi by 5 steps"};
+const char* const names[4] = {"rk4 (N = 4)", "rk4_transition, hand J", "rk4_transition, dual J", "rk4, Phi by 5 steps"};
 #elif M4F_UNIT >= 54 && M4F_UNIT <= 57
 using Plain = o::explicit_rk<o::tables::dormand_prince54, State>;
 using Transition = o::dormand_prince54_transition<State>;

@@ -67,7 +67,8 @@ struct field {
 struct field_jacobian {
     template <class T>
     void operator()(T, const vec<T>& x, mat<T, 3>& ex, mat<T, 3>& bx) const {
-        ex = {{{T(-0.5), T(0.1) * x[2], T(0.1) * x[1]}, {T(0), T(0.3) * std::cos(x[1]), T(0)},
+        ex = {{{T(-0.5), T(0.1) * x[2], T(0.1) * x[1]},
+               {T(0), T(0.3) * std::cos(x[1]), T(0)},
                {T(0.4) * x[0], T(0), T(0)}}};
         bx = {{{T(0), T(0.1), T(0)}, {T(0), T(0), T(0.1) * x[2]}, {T(0.3), T(0), T(0)}}};
     }
@@ -115,9 +116,9 @@ TEST_CASE("boris_transition: in uniform fields det Phi = 1 and Phi is [[I, dt R]
     for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t j = 0; j < 3; ++j) {
             r[i][j] = phi[3 + i][3 + j];
-            CHECK(phi[i][j] == (i == j ? 1.0 : 0.0));  // dx/dx = I
-            CHECK(phi[3 + i][j] == 0.0);                                                          // dv/dx = 0
-            CHECK(std::fabs(phi[i][3 + j] - dt * phi[3 + i][3 + j]) < 1e-15);                     // dx/dv = dt R
+            CHECK(phi[i][j] == (i == j ? 1.0 : 0.0));                          // dx/dx = I
+            CHECK(phi[3 + i][j] == 0.0);                                       // dv/dx = 0
+            CHECK(std::fabs(phi[i][3 + j] - dt * phi[3 + i][3 + j]) < 1e-15);  // dx/dv = dt R
         }
     CHECK(max_difference(product(transpose(r), r), identity<double, 3>()) < 1e-14);
     // The rotation leaves tau = h B fixed: R tau = tau (the axis; Birdsall & Langdon 4-3).

@@ -155,7 +155,8 @@ TEST_CASE("dual: RK4's Phi through with_dual_jacobian is the one from the hand-w
     // The same Phi to round-off: the dual path forms each stage's J Z as f's directional derivatives along
     // Z's columns (jacobian_times), in f's order of operations, where the hand path multiplies J by Z.
     for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t j = 0; j < 3; ++j) CHECK(std::fabs(p1[i][j] - p2[i][j]) <= 8 * eps * (std::fabs(p2[i][j]) + 1));
+        for (std::size_t j = 0; j < 3; ++j)
+            CHECK(std::fabs(p1[i][j] - p2[i][j]) <= 8 * eps * (std::fabs(p2[i][j]) + 1));
     // jacobian_times itself: J z for a 3 x 2 z against the hand Jacobian's product on Lorenz, to round-off.
     const std::array<std::array<double, 2>, 3> zd{{{1.0, 0.5}, {-2.0, 0.0}, {0.25, 3.0}}};
     std::array<std::array<double, 2>, 3> jz{};
@@ -163,7 +164,8 @@ TEST_CASE("dual: RK4's Phi through with_dual_jacobian is the one from the hand-w
     const mat<3> hand{{{-10.0, 10.0, 0.0}, {8.0, -1.0, -1.0}, {2.0, 1.0, -8.0 / 3.0}}};
     for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t j = 0; j < 2; ++j)
-            CHECK(std::fabs(jz[i][j] - (hand[i][0] * zd[0][j] + hand[i][1] * zd[1][j] + hand[i][2] * zd[2][j])) <= 4 * eps * 30);
+            CHECK(std::fabs(jz[i][j] - (hand[i][0] * zd[0][j] + hand[i][1] * zd[1][j] + hand[i][2] * zd[2][j])) <=
+                  4 * eps * 30);
     // An rvalue f is moved in and works as well.
     auto moved = odestep::with_dual_jacobian([](double, const auto& y, auto& dydt) { dydt = {y[1], -y[0]}; });
     std::array<double, 2> z{1.0, 0.0};

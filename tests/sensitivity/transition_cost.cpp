@@ -337,7 +337,6 @@ double run_explicit() {
            run_dense<Table, 2>() + run_dense<Table, 4>() + run_dense<Table, 8>() + run_dense<Table, 16>();
 }
 
-
 // -DSENS_EXPLICIT_ONLY: only RK4, DP 5(4) and velocity Verlet (a quicker run).
 int main() {
     double s = run_explicit<odestep::tables::rk4>() + run_explicit<odestep::tables::dormand_prince54>() +

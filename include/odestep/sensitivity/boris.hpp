@@ -50,11 +50,11 @@ inline constexpr bool is_field_jacobian_v =
 template <class State>
 class boris_transition {
 public:
-    using state_type = State;                      ///< std::array<T, 3>
-    using value_type = value_type_t<State>;        ///< T
-    using stepper_type = boris<State>;             ///< the plain stepper whose step this is
-    using matrix_type = phase_matrix_t<State>;     ///< Phi, 6 x 6 on (x, v)
-    static constexpr int order = 2;                ///< the method's order
+    using state_type = State;                                  ///< std::array<T, 3>
+    using value_type = value_type_t<State>;                    ///< T
+    using stepper_type = boris<State>;                         ///< the plain stepper whose step this is
+    using matrix_type = phase_matrix_t<State>;                 ///< Phi, 6 x 6 on (x, v)
+    static constexpr int order = 2;                            ///< the method's order
     static constexpr std::size_t rhs_evals_per_step = 1;       ///< field evaluations per step
     static constexpr std::size_t jacobian_evals_per_step = 1;  ///< field-Jacobian evaluations per step
     static_assert(detail::is_boris_state_v<State>, "odestep: the Boris pusher needs State = std::array<T, 3>");
@@ -126,7 +126,7 @@ private:
                     dv[i] = seed[3 + i][j];
                 }
             }
-            const vec hdE = ops::scaled(h, times(ex, dx));  // h E_x dx
+            const vec hdE = ops::scaled(h, times(ex, dx));   // h E_x dx
             const vec dtau = ops::scaled(h, times(bx, dx));  // h B_x dx
             const T dtt = T(2) * ops::dot(tau, dtau);
             const vec dvm = ops::plus(dv, hdE);

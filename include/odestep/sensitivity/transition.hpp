@@ -74,11 +74,11 @@ constexpr void require_jacobian() noexcept {
 template <class System, class T, std::size_t N, std::size_t M, class = void>
 struct has_jacobian_times : std::false_type {};
 template <class System, class T, std::size_t N, std::size_t M>
-struct has_jacobian_times<System, T, N, M,
-                          std::void_t<decltype(std::declval<System&>().jacobian_times(
-                              std::declval<T>(), std::declval<const std::array<T, N>&>(),
-                              std::declval<const sensitivity_matrix<T, N, M>&>(),
-                              std::declval<sensitivity_matrix<T, N, M>&>()))>> : std::true_type {};
+struct has_jacobian_times<
+    System, T, N, M,
+    std::void_t<decltype(std::declval<System&>().jacobian_times(
+        std::declval<T>(), std::declval<const std::array<T, N>&>(), std::declval<const sensitivity_matrix<T, N, M>&>(),
+        std::declval<sensitivity_matrix<T, N, M>&>()))>> : std::true_type {};
 
 // to += c m.
 template <class T, std::size_t R, std::size_t C>
