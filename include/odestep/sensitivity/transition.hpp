@@ -236,7 +236,9 @@ struct rk_tangent_listener {
 /// for an f written as a template (forward-mode automatic differentiation, odestep::dual).
 ///
 /// Cost per step: the plain step, one Jacobian per evaluated stage, and per stage an N x N by N x M
-/// product (M = N for Phi). Stack: one N x M matrix per stage, two more, and the plain step's.
+/// product (M = N for Phi; J's zero entries skipped). Through odestep::with_dual_jacobian each stage is
+/// instead one evaluation of f in dual<T, M> seeded with the stage's Z (its jacobian_times), and Phi equals
+/// the hand Jacobian's to round-off. Stack: one N x M matrix per stage, two more, and the plain step's.
 ///
 /// Check (odestep::checked, the default): a step whose new state, or Phi (a NaN or Inf from the
 /// Jacobian, or an overflow), is not finite returns `status::non_finite` with y and Phi untouched.
