@@ -173,6 +173,15 @@ struct rk_tangent_listener {
         return flags;
     }
     static constexpr std::array<bool, S> reads = reading_stages();
+    // The first stage j < i with a_ij != 0 (0 for a stage that reads none: not used there).
+    static constexpr std::array<std::size_t, S> first_reads() noexcept {
+        std::array<std::size_t, S> first{};
+        for (std::size_t i = 0; i < S; ++i)
+            for (std::size_t j = i; j-- > 0;)
+                if (plan::tab.a[i][j] != T(0)) first[i] = j;
+        return first;
+    }
+    static constexpr std::array<std::size_t, S> first_read = first_reads();
 
     // K_i = J_i Z_i, Z_i = S + dt sum_{j<i} a_ij K_j, with J_i = J(t, y) at the stage's input. One loop over
     // the table's row, not one body per stage: the plain step may be flattened (ODESTEP_STEP_FLATTEN) with
@@ -189,16 +198,11 @@ struct rk_tangent_listener {
         block z{};  // every entry is written below; {} because GCC -O2 cannot see that reads[i] implies a nonzero a_ij
         if constexpr (Identity) {
             // Z_i = I + dt sum_j a_ij K_j: the first term written, not added to a zeroed identity.
-            bool first = true;
-            for (std::size_t j = 0; j < i; ++j) {
+            const std::size_t first = first_read[i];
+            scale(z, dt * plan::tab.a[i][first], k[first]);
+            for (std::size_t j = first + 1; j < i; ++j) {
                 const T a = plan::tab.a[i][j];
-                if (a == T(0)) continue;
-                if (first) {
-                    scale(z, dt * a, k[j]);
-                    first = false;
-                } else {
-                    add_scaled(z, dt * a, k[j]);
-                }
+                if (a != T(0)) add_scaled(z, dt * a, k[j]);
             }
             for (std::size_t d = 0; d < N; ++d) z[d][d] += T(1);
         } else {
@@ -236,7 +240,9 @@ struct rk_tangent_listener {
 /// for an f written as a template (forward-mode automatic differentiation, odestep::dual).
 ///
 /// Cost per step: the plain step, one Jacobian per evaluated stage, and per stage an N x N by N x M
-/// product (M = N for Phi). Stack: one N x M matrix per stage, two more, and the plain step's.
+/// product (M = N for Phi; J's zero entries skipped). Through odestep::with_dual_jacobian each stage is
+/// instead one evaluation of f in dual<T, M> seeded with the stage's Z (its jacobian_times), and Phi equals
+/// the hand Jacobian's to round-off. Stack: one N x M matrix per stage, two more, and the plain step's.
 ///
 /// Check (odestep::checked, the default): a step whose new state, or Phi (a NaN or Inf from the
 /// Jacobian, or an overflow), is not finite returns `status::non_finite` with y and Phi untouched.
