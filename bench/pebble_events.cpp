@@ -279,9 +279,9 @@ int extra_checks(const bench::problem<State>& p, const counted_run& cr) {
     // The hand loops see each event in the tick in which odestep locates it.
     bool same_ticks = bad3 == 0;
     for (int e = 0; e < 2; ++e)
-        same_ticks =
-            same_ticks && hand_log.count[e] == 1 && seen.t[e] > hand_log.t[e] - dt && seen.t[e] <= hand_log.t[e] &&
-            hand_checked_log.count[e] == 1 && hand_checked_log.t[e] == hand_log.t[e];
+        same_ticks = same_ticks && hand_log.count[e] == 1 && seen.t[e] > hand_log.t[e] - dt &&
+                     seen.t[e] <= hand_log.t[e] && hand_checked_log.count[e] == 1 &&
+                     hand_checked_log.t[e] == hand_log.t[e];
     std::snprintf(text, sizeof text,
                   "apex seen at the end of the step to t=%.2f, ground to t=%.2f: the ticks odestep locates them in",
                   hand_log.t[0], hand_log.t[1]);
