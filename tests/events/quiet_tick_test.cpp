@@ -13,7 +13,7 @@
 namespace {
 
 using state1 = std::array<double, 1>;
-constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr double inf = std::numeric_limits<double>::infinity();
 
 struct clock_rhs {  // y' = 1
     state1 operator()(double, const state1&) const { return {1.0}; }
@@ -29,7 +29,7 @@ struct jumps_to {
 }  // namespace
 
 TEST_CASE("quiet tick: an Inf from g on the same side is non_finite_event, the tick not counted, y the last good") {
-    for (const double beyond : {infinity, -infinity}) {
+    for (const double beyond : {inf, -inf}) {
         CAPTURE(beyond);
         auto loop = odestep::make_event_stepper(
             odestep::rk4<state1>{},
