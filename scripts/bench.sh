@@ -133,6 +133,9 @@ if ((${#missing[@]} > 0)); then
   exit 2
 fi
 
+# version <header> <macro>: the macro's value as <header> defines it (quotes removed).
+version() { printf '#include <%s>\n%s\n' "$1" "$2" | "$CXX" -x c++ -E -P - 2> /dev/null | tail -n 1 | tr -d '"'; }
+
 # --- building and running one case -------------------------------------------------------------------------
 # ARKODE's optional rows (bench/sundials.hpp; lorenz_rk4's `arkode`) in the full run where SUNDIALS is
 # installed; the quick gate builds without them, as it always did.
@@ -313,7 +316,15 @@ fi
 # --- the C API mode -------------------------------------------------------------------------------------------
 # The section of bench/RESULTS.md that --large writes (to the next "## " heading); the full mode keeps it.
 large_heading='## Large states (issue 27 item 1)'
-large_section() { awk -v h="$large_heading" '$0 == h { p = 1; print; next } p && /^## / { p = 0 } p' "$1"; }
+# section <heading> <file>: the section of <file> from the line <heading> to the next "## " heading.
+section() { awk -v h="$1" '$0 == h { p = 1; print; next } p && /^## / { p = 0 } p' "$2"; }
+# without_section <heading> <file>: <file> without that section, its trailing blank lines dropped.
+without_section() {
+  awk -v h="$1" '$0 == h { skip = 1; next } skip && /^## / { skip = 0 } !skip' "$2" | sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'
+}
+large_section() { section "$large_heading" "$1"; }
+# Written by hand from the modes' tables (every issue 27 ratio against its target): kept by every mode.
+issue27_heading='## Issue 27: every ratio against its target'
 if ((large)); then
   start=$SECONDS
   dir=$(mktemp -d "${TMPDIR:-/tmp}/odestep-bench.XXXXXX")
@@ -363,8 +374,7 @@ if ((large)); then
   cat "$dir/table.md"
   if ((failed == 0)); then
     {
-      awk -v h="$large_heading" '$0 == h { skip = 1; next } skip && /^## / { skip = 0 } !skip' "$root/bench/RESULTS.md" |
-        sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'
+      without_section "$large_heading" "$root/bench/RESULTS.md"
       printf '\n%s\n\n' "$large_heading"
       cat << EOF
 Written by \`scripts/bench.sh --large\` (this section only; the full run keeps it as it is). Source:
@@ -450,7 +460,7 @@ fi
 # The section of bench/RESULTS.md this mode writes, from its heading to the next "## " heading or the end; the
 # full mode keeps it as it is.
 wp_heading='## Work-precision (adaptive)'
-wp_section() { awk -v h="$wp_heading" '$0 == h { p = 1; print; next } p && /^## / { p = 0 } p' "$1"; }
+wp_section() { section "$wp_heading" "$1"; }
 if ((work_precision)); then
   start=$SECONDS
   base=${BENCH_BUILD_DIR:-$root/build/bench}
@@ -459,7 +469,6 @@ if ((work_precision)); then
   wp_rounds=${BENCH_ROUNDS:-21}
   wp_libs=("${libs[@]}")
   wp_flags=()
-  version() { printf '#include <%s>\n%s\n' "$1" "$2" | "$CXX" -x c++ -E -P - 2> /dev/null | tail -n 1 | tr -d '"'; }
   if header_ok arkode/arkode_arkstep.h; then
     wp_libs+=(-lsundials_arkode -lsundials_nvecserial)
     arkode="SUNDIALS $(version sundials/sundials_config.h SUNDIALS_VERSION) ARKODE"
@@ -530,8 +539,7 @@ $(grep -v '^REFERENCE' "$dir/work_precision.md")
 EOF
   )
   {
-    awk -v h="$wp_heading" '$0 == h { skip = 1; next } skip && /^## / { skip = 0 } !skip' "$root/bench/RESULTS.md" |
-      sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'
+    without_section "$wp_heading" "$root/bench/RESULTS.md"
     printf '\n%s\n' "$new_section"
   } > "$dir/RESULTS.md"
   mv "$dir/RESULTS.md" "$root/bench/RESULTS.md"
@@ -543,7 +551,7 @@ fi
 # --- stiff work-precision mode ------------------------------------------------------------------------------
 # Its section of bench/RESULTS.md, kept as it is by the full mode and by --work-precision.
 swp_heading='## Work-precision (stiff)'
-swp_section() { awk -v h="$swp_heading" '$0 == h { p = 1; print; next } p && /^## / { p = 0 } p' "$1"; }
+swp_section() { section "$swp_heading" "$1"; }
 if ((stiff_wp)); then
   start=$SECONDS
   base=${BENCH_BUILD_DIR:-$root/build/bench}
@@ -553,7 +561,6 @@ if ((stiff_wp)); then
   swp_rounds=${BENCH_ROUNDS:-11}
   swp_flags=()
   swp_libs=(-lm)
-  version() { printf '#include <%s>\n%s\n' "$1" "$2" | "$CXX" -x c++ -E -P - 2> /dev/null | tail -n 1 | tr -d '"'; }
   if header_ok arkode/arkode_arkstep.h && header_ok cvode/cvode.h; then
     swp_libs+=(-lsundials_cvode -lsundials_arkode -lsundials_nvecserial -lsundials_sunlinsoldense -lsundials_sunmatrixdense)
     sundials="SUNDIALS $(version sundials/sundials_config.h SUNDIALS_VERSION) CVODE and ARKODE"
@@ -654,8 +661,7 @@ $(cat "$dir/tables.md")
 SECTION
   )
   {
-    awk -v h="$swp_heading" '$0 == h { skip = 1; next } skip && /^## / { skip = 0 } !skip' "$root/bench/RESULTS.md" |
-      sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'
+    without_section "$swp_heading" "$root/bench/RESULTS.md"
     printf '\n%s\n' "$new_section"
   } > "$dir/RESULTS.md"
   mv "$dir/RESULTS.md" "$root/bench/RESULTS.md"
@@ -755,6 +761,7 @@ vg=$(valgrind --version)
 kept_wp=$(wp_section "$root/bench/RESULTS.md")
 kept_swp=$(swp_section "$root/bench/RESULTS.md")
 kept_large=$(large_section "$root/bench/RESULTS.md")
+kept_issue27=$(section "$issue27_heading" "$root/bench/RESULTS.md")
 
 {
   cat << EOF
@@ -970,7 +977,8 @@ EOF
   # The work-precision section (scripts/bench.sh --work-precision) is not measured here: kept as it was.
   [ -z "$kept_wp" ] || printf '\n%s\n' "$kept_wp"
   [ -z "$kept_swp" ] || printf '\n%s\n' "$kept_swp"
-  # Nor the large-state section (scripts/bench.sh --large).
+  # Nor the issue 27 summary (written by hand) and the large-state section (scripts/bench.sh --large).
+  [ -z "$kept_issue27" ] || printf '\n%s\n' "$kept_issue27"
   [ -z "$kept_large" ] || printf '\n%s\n' "$kept_large"
 } > "$root/bench/RESULTS.md"
 
