@@ -48,6 +48,11 @@
 #                              instructions per step and the ratios (targets 1.05, reported, not asserted);
 #                              writes the section "Large states" of bench/RESULTS.md, nothing else (1 to 2
 #                              minutes).
+#   scripts/bench.sh --adaptive
+#                              the adaptive loop's instructions (bench/adaptive_count.cpp, issue 27 item 5): free-running
+#                              DP 5(4) on Lorenz to t = 10 against Odeint's controlled dopri5 at tol 1e-4,
+#                              1e-6, 1e-8, -O2; prints a markdown table (instructions, evaluations, per
+#                              evaluation, achieved error), writes nothing in the tree (a few seconds).
 # All end with the line "bench: N passed, M failed".
 #
 # Environment: CXX (default g++), JOBS (parallel compiles, default nproc), BENCH_ROUNDS (timing rounds,
@@ -63,10 +68,12 @@ quick=0
 work_precision=0
 stiff_wp=0
 c_api=0
+adaptive=0
 large=0
 case "${1:-}" in
   --quick) quick=1 ;;
   --c-api) c_api=1 ;;
+  --adaptive) adaptive=1 ;;
   --large) large=1 ;;
   --work-precision) work_precision=1 ;;
   --stiff-work-precision) stiff_wp=1 ;;
@@ -76,7 +83,7 @@ case "${1:-}" in
     exit 0
     ;;
   *)
-    echo "bench: unknown argument '$1' (use --quick, --work-precision, --stiff-work-precision, --c-api, --large or nothing)" >&2
+    echo "bench: unknown argument '$1' (use --quick, --work-precision, --stiff-work-precision, --c-api, --large, --adaptive or nothing)" >&2
     exit 2
     ;;
 esac
@@ -125,6 +132,9 @@ if ((${#missing[@]} > 0)); then
   summary 0 1
   exit 2
 fi
+
+# version <header> <macro>: the macro's value as <header> defines it (quotes removed).
+version() { printf '#include <%s>\n%s\n' "$1" "$2" | "$CXX" -x c++ -E -P - 2> /dev/null | tail -n 1 | tr -d '"'; }
 
 # --- building and running one case -------------------------------------------------------------------------
 # ARKODE's optional rows (bench/sundials.hpp; lorenz_rk4's `arkode`) in the full run where SUNDIALS is
@@ -306,7 +316,15 @@ fi
 # --- the C API mode -------------------------------------------------------------------------------------------
 # The section of bench/RESULTS.md that --large writes (to the next "## " heading); the full mode keeps it.
 large_heading='## Large states (issue 27 item 1)'
-large_section() { awk -v h="$large_heading" '$0 == h { p = 1; print; next } p && /^## / { p = 0 } p' "$1"; }
+# section <heading> <file>: the section of <file> from the line <heading> to the next "## " heading.
+section() { awk -v h="$1" '$0 == h { p = 1; print; next } p && /^## / { p = 0 } p' "$2"; }
+# without_section <heading> <file>: <file> without that section, its trailing blank lines dropped.
+without_section() {
+  awk -v h="$1" '$0 == h { skip = 1; next } skip && /^## / { skip = 0 } !skip' "$2" | sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'
+}
+large_section() { section "$large_heading" "$1"; }
+# Written by hand from the modes' tables (every issue 27 ratio against its target): kept by every mode.
+issue27_heading='## Issue 27: every ratio against its target'
 if ((large)); then
   start=$SECONDS
   dir=$(mktemp -d "${TMPDIR:-/tmp}/odestep-bench.XXXXXX")
@@ -340,19 +358,23 @@ if ((large)); then
   {
   echo "| method | T | N | -O | odestep checked | hand checked | ratio | odestep unchecked | hand plain | ratio |"
   echo "|---|---|--:|---|--:|--:|--:|--:|--:|--:|"
-  awk -F'\t' '{ split($2, d, " "); key = d[1] "\t" d[2] "\t" d[3] "\t" $1; ir[key, d[4]] = $3 / d[5]
+  awk -F'\t' -v target=1.05 '
+    # A ratio against the target: "0.912 met", or "1.293 **missed** (+23%)" (by how much it exceeds 1.05).
+    function judged(r) {
+      return r <= target + 1e-12 ? sprintf("%.3f met", r) : sprintf("%.3f **missed** (+%.1f%%)", r, (r / target - 1) * 100)
+    }
+    { split($2, d, " "); key = d[1] "\t" d[2] "\t" d[3] "\t" $1; ir[key, d[4]] = $3 / d[5]
                  if (!(key in seen)) { seen[key] = 1; order[++n] = key } }
     END { for (i = 1; i <= n; ++i) { k = order[i]; split(k, p, "\t")
-            printf "| %s | %s | %s | %s | %.1f | %.1f | %.3f | %.1f | %.1f | %.3f |\n", p[1] == "vv" ? "velocity Verlet" : p[1] == "dp54" ? "DP 5(4) + estimate" : "RK4",
-              p[2], p[3], p[4], ir[k, "odestep"], ir[k, "hand_checked"], ir[k, "odestep"] / ir[k, "hand_checked"],
-              ir[k, "odestep_unchecked"], ir[k, "hand"], ir[k, "odestep_unchecked"] / ir[k, "hand"] } }' \
+            printf "| %s | %s | %s | %s | %.1f | %.1f | %s | %.1f | %.1f | %s |\n", p[1] == "vv" ? "velocity Verlet" : p[1] == "dp54" ? "DP 5(4) + estimate" : "RK4",
+              p[2], p[3], p[4], ir[k, "odestep"], ir[k, "hand_checked"], judged(ir[k, "odestep"] / ir[k, "hand_checked"]),
+              ir[k, "odestep_unchecked"], ir[k, "hand"], judged(ir[k, "odestep_unchecked"] / ir[k, "hand"]) } }' \
     "$dir/large.tsv" | sort -t'|' -k2,2 -k3,3 -k4,4n -s
   } > "$dir/table.md"
   cat "$dir/table.md"
   if ((failed == 0)); then
     {
-      awk -v h="$large_heading" '$0 == h { skip = 1; next } skip && /^## / { skip = 0 } !skip' "$root/bench/RESULTS.md" |
-        sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'
+      without_section "$large_heading" "$root/bench/RESULTS.md"
       printf '\n%s\n\n' "$large_heading"
       cat << EOF
 Written by \`scripts/bench.sh --large\` (this section only; the full run keeps it as it is). Source:
@@ -360,7 +382,8 @@ Written by \`scripts/bench.sh --large\` (this section only; the full run keeps i
 \`${common_flags[*]}\` and the -O of each row; instructions per step (callgrind, only inside each variant's
 step function; glibc's memcpy kept off \`rep movsb\`, see the script). RK4 on y' = -k y, velocity Verlet on
 x'' = -w^2 x (the acceleration kept by the caller; odestep's force returned by value, the hand loop's in
-place). ratio: odestep over the hand loop (target: at most 1.05).
+place). ratio: odestep over the hand loop, against issue 27's target of at most 1.05 (met, or missed and
+by how much the ratio exceeds 1.05).
 
 EOF
       cat "$dir/table.md"
@@ -372,6 +395,34 @@ EOF
   summary "$passed" "$failed"
   ((failed == 0))
   exit $?
+fi
+
+if ((adaptive)); then
+  dir=$(mktemp -d "${TMPDIR:-/tmp}/odestep-bench.XXXXXX")
+  trap 'rm -rf "$dir"' EXIT
+  if ! "$CXX" "${common_flags[@]}" -O2 -I"$root/include" "$root/bench/adaptive_count.cpp" -o "$dir/adaptive" \
+    > "$dir/build.log" 2>&1 || ! (cd "$dir" && valgrind --tool=callgrind --collect-atstart=no \
+    '--toggle-collect=*adaptive_run_*' --callgrind-out-file="$dir/cg" ./adaptive count > "$dir/runs.tsv" 2> /dev/null); then
+    cat "$dir/build.log" >&2
+    summary 0 1
+    exit 1
+  fi
+  for f in "$dir/cg".*; do
+    printf 'COUNT\t%s\t%s\n' "$(sed -n 's/^desc: Trigger: Client Request: adaptive //p' "$f")" \
+      "$(sed -n 's/^summary: //p' "$f")" >> "$dir/runs.tsv"
+  done
+  echo "| tol | odestep instructions | Odeint instructions | ratio (target <= 1) | odestep f evals | Odeint f evals | per eval odestep / Odeint | error odestep / Odeint |"
+  echo "|---|--:|--:|---|--:|--:|---|---|"
+  awk -F'\t' '$1 == "RUN" { ev[$2, $3] = $4; err[$2, $3] = $5; if (!($3 in seen)) { seen[$3] = 1; order[++n] = $3 } }
+    $1 == "COUNT" { split($2, d, " "); ir[d[1], d[2]] = $3 }
+    END { for (i = 1; i <= n; ++i) { t = order[i]; r = ir["odestep", t] / ir["odeint", t]
+            printf "| %s | %d | %d | %.3f %s | %d | %d | %.1f / %.1f | %s / %s |\n", t, ir["odestep", t], ir["odeint", t], r,
+              r <= 1 ? "met" : sprintf("**missed** (+%.0f%%)", (r - 1) * 100), ev["odestep", t], ev["odeint", t],
+              ir["odestep", t] / ev["odestep", t], ir["odeint", t] / ev["odeint", t], err["odestep", t], err["odeint", t] } }' \
+    "$dir/runs.tsv"
+  echo "bench: adaptive mode ($("$CXX" --version | head -n 1), -O2)"
+  summary 1 0
+  exit 0
 fi
 
 if ((c_api)); then
@@ -409,7 +460,7 @@ fi
 # The section of bench/RESULTS.md this mode writes, from its heading to the next "## " heading or the end; the
 # full mode keeps it as it is.
 wp_heading='## Work-precision (adaptive)'
-wp_section() { awk -v h="$wp_heading" '$0 == h { p = 1; print; next } p && /^## / { p = 0 } p' "$1"; }
+wp_section() { section "$wp_heading" "$1"; }
 if ((work_precision)); then
   start=$SECONDS
   base=${BENCH_BUILD_DIR:-$root/build/bench}
@@ -418,7 +469,6 @@ if ((work_precision)); then
   wp_rounds=${BENCH_ROUNDS:-21}
   wp_libs=("${libs[@]}")
   wp_flags=()
-  version() { printf '#include <%s>\n%s\n' "$1" "$2" | "$CXX" -x c++ -E -P - 2> /dev/null | tail -n 1 | tr -d '"'; }
   if header_ok arkode/arkode_arkstep.h; then
     wp_libs+=(-lsundials_arkode -lsundials_nvecserial)
     arkode="SUNDIALS $(version sundials/sundials_config.h SUNDIALS_VERSION) ARKODE"
@@ -489,8 +539,7 @@ $(grep -v '^REFERENCE' "$dir/work_precision.md")
 EOF
   )
   {
-    awk -v h="$wp_heading" '$0 == h { skip = 1; next } skip && /^## / { skip = 0 } !skip' "$root/bench/RESULTS.md" |
-      sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'
+    without_section "$wp_heading" "$root/bench/RESULTS.md"
     printf '\n%s\n' "$new_section"
   } > "$dir/RESULTS.md"
   mv "$dir/RESULTS.md" "$root/bench/RESULTS.md"
@@ -502,7 +551,7 @@ fi
 # --- stiff work-precision mode ------------------------------------------------------------------------------
 # Its section of bench/RESULTS.md, kept as it is by the full mode and by --work-precision.
 swp_heading='## Work-precision (stiff)'
-swp_section() { awk -v h="$swp_heading" '$0 == h { p = 1; print; next } p && /^## / { p = 0 } p' "$1"; }
+swp_section() { section "$swp_heading" "$1"; }
 if ((stiff_wp)); then
   start=$SECONDS
   base=${BENCH_BUILD_DIR:-$root/build/bench}
@@ -512,7 +561,6 @@ if ((stiff_wp)); then
   swp_rounds=${BENCH_ROUNDS:-11}
   swp_flags=()
   swp_libs=(-lm)
-  version() { printf '#include <%s>\n%s\n' "$1" "$2" | "$CXX" -x c++ -E -P - 2> /dev/null | tail -n 1 | tr -d '"'; }
   if header_ok arkode/arkode_arkstep.h && header_ok cvode/cvode.h; then
     swp_libs+=(-lsundials_cvode -lsundials_arkode -lsundials_nvecserial -lsundials_sunlinsoldense -lsundials_sunmatrixdense)
     sundials="SUNDIALS $(version sundials/sundials_config.h SUNDIALS_VERSION) CVODE and ARKODE"
@@ -613,8 +661,7 @@ $(cat "$dir/tables.md")
 SECTION
   )
   {
-    awk -v h="$swp_heading" '$0 == h { skip = 1; next } skip && /^## / { skip = 0 } !skip' "$root/bench/RESULTS.md" |
-      sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'
+    without_section "$swp_heading" "$root/bench/RESULTS.md"
     printf '\n%s\n' "$new_section"
   } > "$dir/RESULTS.md"
   mv "$dir/RESULTS.md" "$root/bench/RESULTS.md"
@@ -714,6 +761,7 @@ vg=$(valgrind --version)
 kept_wp=$(wp_section "$root/bench/RESULTS.md")
 kept_swp=$(swp_section "$root/bench/RESULTS.md")
 kept_large=$(large_section "$root/bench/RESULTS.md")
+kept_issue27=$(section "$issue27_heading" "$root/bench/RESULTS.md")
 
 {
   cat << EOF
@@ -929,7 +977,8 @@ EOF
   # The work-precision section (scripts/bench.sh --work-precision) is not measured here: kept as it was.
   [ -z "$kept_wp" ] || printf '\n%s\n' "$kept_wp"
   [ -z "$kept_swp" ] || printf '\n%s\n' "$kept_swp"
-  # Nor the large-state section (scripts/bench.sh --large).
+  # Nor the issue 27 summary (written by hand) and the large-state section (scripts/bench.sh --large).
+  [ -z "$kept_issue27" ] || printf '\n%s\n' "$kept_issue27"
   [ -z "$kept_large" ] || printf '\n%s\n' "$kept_large"
 } > "$root/bench/RESULTS.md"
 

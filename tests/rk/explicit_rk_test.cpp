@@ -307,3 +307,43 @@ static_assert(odestep::detail::b_row(odestep::tables::rk4::table<double>) == 4);
 static_assert(odestep::detail::b_row(odestep::tables::cash_karp54::table<double>) == 6);
 static_assert(odestep::detail::first_same_as_last(odestep::tables::dormand_prince54::table<long double>));
 static_assert(!odestep::detail::first_same_as_last(odestep::tables::cash_karp54::table<double>));
+
+TEST_CASE("explicit_rk: a large state (its finiteness sum taken in lanes) refuses a NaN or Inf in any one component") {
+    // 67 components: eight passes of explicit_rk's 8 float lanes (add_all sums a float state of at least 32
+    // in lanes) and 3 left over, so that every lane and the remainder are poisoned in turn. f ignores y, so a
+    // poisoned stage reaches the test only through its own sum: through the new state for RK4's stages
+    // (all weights non-zero), and through the zero-weight stages' sum for Dormand-Prince's second stage.
+    // Expected: non_finite and y untouched for each poison; ok for f = 0 on components at half the largest
+    // float, whose sum overflows (the slow path then finds every component finite; y' = 0 keeps y exactly).
+    constexpr std::size_t n = 67;
+    using big = std::array<float, n>;
+    const float poisons[] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+                             -std::numeric_limits<float>::infinity()};
+    const auto poisoned_run = [&](auto stepper, std::size_t evaluation) {
+        for (const float poison : poisons) {
+            for (std::size_t c = 0; c < n; ++c) {
+                std::size_t calls = 0;
+                auto f = [&](float, const big&, big& d) {
+                    ++calls;
+                    d.fill(1.0f);
+                    if (calls == evaluation) d[c] = poison;
+                };
+                big y;
+                y.fill(0.5f);
+                const big before = y;
+                INFO("evaluation ", evaluation, ", component ", c, ", poison ", poison);
+                CHECK(stepper.step(f, y, 0.0f, 0.125f) == odestep::status::non_finite);
+                CHECK(same_bits(y, before));
+            }
+        }
+    };
+    for (std::size_t evaluation = 1; evaluation <= 4; ++evaluation) poisoned_run(odestep::rk4<big>{}, evaluation);
+    poisoned_run(odestep::dormand_prince54<big>{}, 2);
+
+    big y;
+    y.fill(std::numeric_limits<float>::max() / 2.0f);
+    const big before = y;
+    CHECK(odestep::rk4<big>{}.step([](float, const big&, big& d) { d.fill(0.0f); }, y, 0.0f, 0.125f) ==
+          odestep::status::ok);
+    CHECK(same_bits(y, before));
+}
