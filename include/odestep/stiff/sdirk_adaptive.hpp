@@ -21,6 +21,7 @@
 #include "../status.hpp"
 #include "../system.hpp"
 #include "../tables/implicit_rk.hpp"
+#include "hermite_step.hpp"
 #include "radau5.hpp"
 #include "step_control.hpp"
 
@@ -32,38 +33,19 @@ namespace odestep {
 /// step's at its start, so no evaluation of f is added. The engine's accept sink:
 /// `engine.attempt(f, t, y, t_end, accepted, dense)`, then `dense.at(t, u)`.
 template <class State>
-class sdirk_dense {
-public:
-    using state_type = State;                ///< the state
-    using value_type = value_type_t<State>;  ///< its scalar T
-
-private:
-    using T = value_type;
+class sdirk_dense : public hermite_step<State> {
+    using T = value_type_t<State>;
 
 public:
     /// The accept sink: the step of size h from (t0, y0) with slope f0 to y1 with slope f1.
     void operator()(T t0, T h, const State& y0, const State& f0, const State& y1, const State& f1) noexcept {
-        t0_ = t0;
-        h_ = h;
-        detail::assign(y0_, y0);
-        detail::assign(f0_, f0);
-        detail::assign(y1_, y1);
-        detail::assign(f1_, f1);
+        this->t0_ = t0;
+        this->h_ = h;
+        detail::assign(this->y0_, y0);
+        detail::assign(this->f0_, f0);
+        detail::assign(this->y1_, y1);
+        detail::assign(this->f1_, f1);
     }
-    /// The step's end time.
-    T t_end() const noexcept { return t0_ + h_; }
-    /// The step's size (signed).
-    T step() const noexcept { return h_; }
-    /// The interpolant at t (meant for t inside the step).
-    void at(T t, State& out) const noexcept { hermite_cubic(y0_, f0_, y1_, f1_, h_, (t - t0_) / h_, out); }
-
-private:
-    T t0_ = T(0);
-    T h_ = T(1);
-    State y0_{};
-    State f0_{};
-    State y1_{};
-    State f1_{};
 };
 
 /// \brief Error-controlled stepping with an embedded SDIRK pair (`Method` a table tag whose table is lower
