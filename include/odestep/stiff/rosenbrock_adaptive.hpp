@@ -133,22 +133,25 @@ public:
     template <class System, class Sink = detail::no_step_sink>
     status attempt(System& f, T& t, State& y, T t_end, bool& accepted, Sink&& sink = Sink{}) {
         accepted = false;
-        detail::attempt_plan<T> p(t, t_end);
-        if (p.span == T(0)) {
+        const T span = t_end - t;
+        if (span == T(0)) {
             accepted = true;
             return status::ok;
         }
-        p.mag = ctl_.h;
-        if (!(p.mag > T(0))) {
+        const T dir = span > T(0) ? T(1) : T(-1);
+        const T rem = detail::abs_value(span);
+        T mag = ctl_.h;
+        if (!(mag > T(0))) {
             State f0;
             detail::evaluate(f, t, y, f0);
             if (!detail::all_finite(f0)) return status::non_finite;
-            if (!p.estimate(f, t, y, f0, estimate_order, tol_, control_)) return status::non_finite;
+            mag = detail::first_step_size(f, t, y, f0, estimate_order, tol_, control_, rem, dir);
+            if (!(mag > T(0))) return status::non_finite;
         }
-        p.bound(control_);
+        const detail::step_plan<T> p = detail::plan_step(control_, mag, rem);
         const bool last = p.last;
-        const T h = last ? p.span : p.dir * p.mag;
-        if (p.unresolved(h, t)) return status::step_too_small;
+        const T h = last ? span : dir * p.mag;
+        if (!last && detail::unresolved_step(h, t)) return status::step_too_small;
         State y_new = y;
         State err{};
         ++tried_;
