@@ -122,10 +122,9 @@ public:
     /// status::invalid_tolerance, status::invalid_setting (a controller setting, or jacobian_reuse_rate()
     /// outside (0, 1)), or ok.
     status settings_status() const noexcept {
-        const status s = this->tol_.check();
+        const status s = base::settings_status();
         if (s != status::ok) return s;
-        if (!(theta_keep_ > T(0) && theta_keep_ < T(1))) return status::invalid_setting;
-        return this->control_.check();
+        return theta_keep_ > T(0) && theta_keep_ < T(1) ? status::ok : status::invalid_setting;
     }
     /// Newton's contraction rate theta below which an accepted step keeps its Jacobian for the next one
     /// (radau5.f's WORK(3)); default 0.1, the value radau5.f recommends when a Jacobian is costly (it
