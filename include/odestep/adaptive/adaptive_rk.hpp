@@ -133,8 +133,8 @@ constexpr T default_tolerance() noexcept {
 /// from that same y (compared bit for bit, so a caller that changed y between calls is never given a stale
 /// derivative) at that time (to four ULPs: the grid's t0 + (i + 1) dt and the interval's t + dt). No heap, no static state; a copy is an independent engine.
 template <class Method, class State>
-class adaptive_rk : public engine_settings<adaptive_rk<Method, State>, State, detail::pi_memory<value_type_t<State>>> {
-    using settings = engine_settings<adaptive_rk, State, detail::pi_memory<value_type_t<State>>>;
+class adaptive_rk : public engine_settings<adaptive_rk<Method, State>, State> {
+    using settings = engine_settings<adaptive_rk, State>;
 
 public:
     using state_type = State;                ///< the state, std::array<T, N>

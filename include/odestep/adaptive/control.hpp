@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 
 #include "../config.hpp"
 #include "../detail/grid_clock.hpp"
@@ -229,6 +230,10 @@ bool same_point_time(T a, T b) noexcept {
     return d <= T(4) * std::numeric_limits<T>::epsilon() * (abs_value(a) + abs_value(b));
 }
 
+// The memory of the Newton-based stiff engines (stiff/step_control.hpp).
+template <class T>
+struct stiff_step_control;
+
 /// What every error-controlled engine carries from one attempt to the next for its step size: the |h| to try
 /// next, whether the last attempt was rejected, the failed attempts in a row, and the rejections counted.
 template <class T>
@@ -331,17 +336,19 @@ bool unresolved_step(T h, T t) noexcept {
 
 /// \brief The settings every error-controlled engine has (odestep::adaptive_rk, odestep::rosenbrock_adaptive,
 /// odestep::sdirk_adaptive, odestep::radau5): the tolerances, the controller's settings and the step size to
-/// try next, with what the engine carries between attempts for its step size (`Memory`).
+/// try next, with what the engine carries between attempts for its step size (the PI controller's memory,
+/// or with `Newton` that of Hairer's stiff codes, radau5.f's).
 ///
 /// `Engine` is the engine deriving from it; an engine that derives something from the tolerances (Radau's
 /// transformed tolerances, Newton's) has it recomputed through its `tolerance_changed()` on set_tolerance.
-template <class Engine, class State, class Memory>
+template <class Engine, class State, bool Newton = false>
 class engine_settings {
 public:
     using value_type = value_type_t<State>;  ///< the scalar T
 
 private:
     using T = value_type;
+    using memory_type = std::conditional_t<Newton, detail::stiff_step_control<T>, detail::pi_memory<T>>;
 
 public:
     /// status::invalid_tolerance, status::invalid_setting, or ok.
@@ -380,7 +387,7 @@ protected:
 
     tolerances<State> tol_;    ///< the tolerances
     step_control<T> control_;  ///< the controller's settings
-    Memory ctl_{};             ///< the step size and what the controller carries between attempts
+    memory_type ctl_{};        ///< the step size and what the controller carries between attempts
 };
 
 }  // namespace odestep

@@ -130,7 +130,7 @@ private:
 template <class State>
 class radau5 : public newton_engine_settings<radau5<State>, State> {
     using settings = newton_engine_settings<radau5, State>;
-    friend class engine_settings<radau5, State, detail::stiff_step_control<value_type_t<State>>>;
+    friend class engine_settings<radau5, State, true>;
 
 public:
     using state_type = State;                ///< the state, std::array<T, N>

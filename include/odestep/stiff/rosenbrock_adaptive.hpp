@@ -77,9 +77,8 @@ private:
 /// max_failures_in_a_row times in a row; then its status is returned. Every failure leaves y and t as they
 /// were. What it carries: the step size, the controller's memory; no heap, no static state.
 template <class Method, class State>
-class rosenbrock_adaptive
-    : public engine_settings<rosenbrock_adaptive<Method, State>, State, detail::pi_memory<value_type_t<State>>> {
-    using settings = engine_settings<rosenbrock_adaptive, State, detail::pi_memory<value_type_t<State>>>;
+class rosenbrock_adaptive : public engine_settings<rosenbrock_adaptive<Method, State>, State> {
+    using settings = engine_settings<rosenbrock_adaptive, State>;
 
 public:
     using state_type = State;                        ///< the state, std::array<T, N>

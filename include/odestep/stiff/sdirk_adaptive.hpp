@@ -82,7 +82,7 @@ public:
 template <class Method, class State>
 class sdirk_adaptive : public newton_engine_settings<sdirk_adaptive<Method, State>, State> {
     using settings = newton_engine_settings<sdirk_adaptive, State>;
-    friend class engine_settings<sdirk_adaptive, State, detail::stiff_step_control<value_type_t<State>>>;
+    friend class engine_settings<sdirk_adaptive, State, true>;
 
 public:
     using state_type = State;                ///< the state, std::array<T, N>

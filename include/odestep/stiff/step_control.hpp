@@ -109,8 +109,8 @@ namespace odestep {
 /// \brief The settings of the Newton-based stiff engines (odestep::radau5, odestep::sdirk_adaptive): those of
 /// odestep::engine_settings and Newton's contraction rate below which an accepted step keeps its Jacobian.
 template <class Engine, class State>
-class newton_engine_settings : public engine_settings<Engine, State, detail::stiff_step_control<value_type_t<State>>> {
-    using base = engine_settings<Engine, State, detail::stiff_step_control<value_type_t<State>>>;
+class newton_engine_settings : public engine_settings<Engine, State, true> {
+    using base = engine_settings<Engine, State, true>;
 
 public:
     using value_type = value_type_t<State>;  ///< the scalar T
