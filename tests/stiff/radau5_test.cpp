@@ -12,6 +12,7 @@
 
 #include "support/counting.hpp"
 #include "support/order_fit.hpp"
+#include "support/stiff_engine_checks.hpp"
 #include "support/stiff_problems.hpp"
 
 namespace {
@@ -202,23 +203,8 @@ TEST_CASE("radau5_substeps: Robertson from (1, 0, 0) on a 1.0 grid to 1e5, every
 TEST_CASE("radau5_substeps: exp(sin t) on a 1.0 grid to 20: error <= 100 rtol over the grid, slope near 1") {
     // a smooth problem with a closed-form solution (support/problems.hpp), on a grid coarse enough that the
     // error control, not the grid, sets the steps
-    const auto sys = odestep::with_jacobian(odestep_test::exp_sin{}, odestep_test::exp_sin_jacobian{});
     const std::array<double, 3> rtols{1e-4, 1e-6, 1e-8};
-    std::array<double, 3> errors{};
-    for (std::size_t k = 0; k < 3; ++k) {
-        odestep::radau5_substeps<S3> stepper(odestep::tolerances<S3>::uniform(rtols[k], rtols[k]));
-        S3 y = odestep_test::exp_sin::start<double>();
-        double worst = 0;
-        const auto r = odestep::integrate(stepper, sys, y, 0.0, 20.0, 1.0, [&](double t, const S3& u) {
-            const S3 x = odestep_test::exp_sin::exact(t);
-            for (std::size_t i = 0; i < 3; ++i) worst = std::fmax(worst, std::fabs(u[i] - x[i]));
-        });
-        REQUIRE(r.status == odestep::status::ok);
-        errors[k] = worst;
-        MESSAGE("rtol " << rtols[k] << ": largest error over the grid " << worst << ", accepted "
-                        << stepper.engine().accepted_steps());
-        CHECK(worst <= 100 * rtols[k]);
-    }
+    const std::array<double, 3> errors = odestep_test::check_exp_sin_on_grid<odestep::radau5_substeps>(rtols);
     const double slope = odestep_test::log_log_slope(rtols, errors);
     MESSAGE("slope of the error against rtol: " << slope);
     CHECK(slope >= 0.7);
@@ -363,55 +349,15 @@ TEST_CASE("radau5_substeps and rodas4_substeps: Prothero-Robinson with lambda = 
 // ---- failures: a clear status, y bit for bit as it was
 
 TEST_CASE("radau5_substeps: NaN from f, NaN in the Jacobian and the attempt cap leave y bit for bit") {
-    const auto jac = odestep_test::robertson_jacobian{};
     SUBCASE("f gives NaN past t = 1.05: non_finite on the interval that reaches it") {
-        auto f = [](double t, const S3& y, S3& d) {
-            odestep_test::robertson{}(t, y, d);
-            if (t > 1.05) d[1] = std::numeric_limits<double>::quiet_NaN();
-        };
-        odestep::radau5_substeps<S3> stepper(odestep::tolerances<S3>::uniform(1e-6, 1e-12));
-        S3 y{1, 0, 0};
-        const auto r = odestep::integrate(stepper, odestep::with_jacobian(f, jac), y, 0.0, 2.0, 0.1);
-        CHECK(r.status == odestep::status::non_finite);
-        CHECK(r.t == doctest::Approx(1.0));
-        // the state of the last good interval, bit for bit: the same run to t = 1
-        odestep::radau5_substeps<S3> again(odestep::tolerances<S3>::uniform(1e-6, 1e-12));
-        S3 z{1, 0, 0};
-        REQUIRE(odestep::integrate(again, odestep::with_jacobian(f, jac), z, 0.0, 1.0, 0.1).status ==
-                odestep::status::ok);
-        CHECK(odestep::detail::same_values(y, z));
+        odestep_test::check_nan_past_a_time<odestep::radau5_substeps>();
     }
-    SUBCASE("a Jacobian with NaN: singular_matrix") {
-        auto bad = [](double, const S3&, odestep::jacobian_t<S3>& j) {
-            j = {};
-            j[1][1] = std::numeric_limits<double>::quiet_NaN();
-        };
-        odestep::radau5_substeps<S3> stepper;
-        S3 y{0.5, 1e-5, 0.5 - 1e-5};
-        const S3 before = y;
-        CHECK(stepper.step(odestep::with_jacobian(odestep_test::robertson{}, bad), y, 0.0, 0.1) ==
-              odestep::status::singular_matrix);
-        CHECK(odestep::detail::same_values(y, before));
-    }
+    SUBCASE("a Jacobian with NaN: singular_matrix") { odestep_test::check_nan_jacobian<odestep::radau5_substeps>(); }
     SUBCASE("the attempt cap: substep_limit, y as given") {
-        odestep::radau5_substeps<S3, 4> stepper(odestep::tolerances<S3>::uniform(1e-8, 1e-14));
-        S3 y{1, 0, 0};
-        const S3 before = y;
-        CHECK(stepper.step(odestep::with_jacobian(odestep_test::robertson{}, jac), y, 0.0, 1.0) ==
-              odestep::status::substep_limit);
-        CHECK(odestep::detail::same_values(y, before));
-        CHECK(stepper.set_max_attempts(5) == odestep::status::invalid_setting);
+        odestep_test::check_attempt_cap<odestep::radau5_substeps, 4>();
     }
     SUBCASE("bad settings are refused before anything is evaluated") {
-        std::size_t calls = 0;
-        auto f = odestep_test::counted(odestep_test::robertson{}, &calls);
-        odestep::radau5_substeps<S3> stepper(odestep::tolerances<S3>::uniform(-1.0, 1e-6));
-        S3 y{1, 0, 0};
-        CHECK(stepper.step(f, y, 0.0, 0.1) == odestep::status::invalid_tolerance);
-        stepper.engine().set_tolerance(odestep::tolerances<S3>::uniform(1e-6, 1e-6));
-        stepper.engine().set_jacobian_reuse_rate(1.5);
-        CHECK(stepper.step(f, y, 0.0, 0.1) == odestep::status::invalid_setting);
-        CHECK(calls == 0);
+        odestep_test::check_bad_newton_settings<odestep::radau5_substeps>();
     }
 }
 

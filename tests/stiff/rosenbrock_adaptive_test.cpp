@@ -12,6 +12,7 @@
 
 #include "support/counting.hpp"
 #include "support/order_fit.hpp"
+#include "support/stiff_engine_checks.hpp"
 #include "support/stiff_problems.hpp"
 
 namespace {
@@ -74,19 +75,7 @@ TEST_CASE("rodas4_substeps: Robertson from (1, 0, 0) on a 0.1 grid to 40, every 
 }
 
 TEST_CASE("rodas4_substeps: exp(sin t) on a 1.0 grid to 20: error <= 100 rtol over the grid") {
-    const auto sys = odestep::with_jacobian(odestep_test::exp_sin{}, odestep_test::exp_sin_jacobian{});
-    for (double rtol : {1e-4, 1e-6, 1e-8}) {
-        odestep::rodas4_substeps<S3> stepper(odestep::tolerances<S3>::uniform(rtol, rtol));
-        S3 y = odestep_test::exp_sin::start<double>();
-        double worst = 0;
-        const auto r = odestep::integrate(stepper, sys, y, 0.0, 20.0, 1.0, [&](double t, const S3& u) {
-            const S3 x = odestep_test::exp_sin::exact(t);
-            for (std::size_t i = 0; i < 3; ++i) worst = std::fmax(worst, std::fabs(u[i] - x[i]));
-        });
-        REQUIRE(r.status == odestep::status::ok);
-        MESSAGE("rtol " << rtol << ": largest error over the grid " << worst);
-        CHECK(worst <= 100 * rtol);
-    }
+    (void)odestep_test::check_exp_sin_on_grid<odestep::rodas4_substeps>(std::array<double, 3>{1e-4, 1e-6, 1e-8});
 }
 
 TEST_CASE("rodas4_substeps: Van der Pol mu = 1000, HIRES and OREGO from their initial states on 0.1 grids") {
@@ -197,26 +186,8 @@ TEST_CASE("rodas4: integrate_times interpolates by cubic Hermite: exact for a cu
 }
 
 TEST_CASE("rodas4_substeps: NaN from f and the attempt cap leave y bit for bit") {
-    const auto jac = odestep_test::robertson_jacobian{};
-    auto f = [](double t, const S3& y, S3& d) {
-        odestep_test::robertson{}(t, y, d);
-        if (t > 1.05) d[1] = std::numeric_limits<double>::quiet_NaN();
-    };
-    odestep::rodas4_substeps<S3> stepper(odestep::tolerances<S3>::uniform(1e-6, 1e-12));
-    S3 y{1, 0, 0};
-    const auto r = odestep::integrate(stepper, odestep::with_jacobian(f, jac), y, 0.0, 2.0, 0.1);
-    CHECK(r.status == odestep::status::non_finite);
-    CHECK(r.t == doctest::Approx(1.0));
-    odestep::rodas4_substeps<S3> again(odestep::tolerances<S3>::uniform(1e-6, 1e-12));
-    S3 z{1, 0, 0};
-    REQUIRE(odestep::integrate(again, odestep::with_jacobian(f, jac), z, 0.0, 1.0, 0.1).status == odestep::status::ok);
-    CHECK(odestep::detail::same_values(y, z));
-    odestep::rodas4_substeps<S3, 3> capped(odestep::tolerances<S3>::uniform(1e-8, 1e-14));
-    S3 w{1, 0, 0};
-    const S3 before = w;
-    CHECK(capped.step(odestep::with_jacobian(odestep_test::robertson{}, jac), w, 0.0, 1.0) ==
-          odestep::status::substep_limit);
-    CHECK(odestep::detail::same_values(w, before));
+    odestep_test::check_nan_past_a_time<odestep::rodas4_substeps>();
+    odestep_test::check_attempt_cap<odestep::rodas4_substeps, 3>();
 }
 
 TEST_CASE("rodas4: Robertson's y2 loses order in the stiff range, and the estimate says so truthfully") {

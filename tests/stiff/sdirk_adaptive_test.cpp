@@ -13,6 +13,7 @@
 
 #include "support/counting.hpp"
 #include "support/order_fit.hpp"
+#include "support/stiff_engine_checks.hpp"
 #include "support/stiff_problems.hpp"
 
 namespace {
@@ -145,19 +146,7 @@ TEST_CASE("sdirk4_substeps: Van der Pol mu = 1000 from (2, 0) on a 0.1 grid to 2
 
 TEST_CASE("sdirk4_substeps: exp(sin t) on a 1.0 grid to 20: error <= 100 rtol over the grid") {
     // a smooth problem with a closed-form solution (support/problems.hpp)
-    const auto sys = odestep::with_jacobian(odestep_test::exp_sin{}, odestep_test::exp_sin_jacobian{});
-    for (double rtol : {1e-4, 1e-6, 1e-8}) {
-        odestep::sdirk4_substeps<S3> stepper(odestep::tolerances<S3>::uniform(rtol, rtol));
-        S3 y = odestep_test::exp_sin::start<double>();
-        double worst = 0;
-        const auto r = odestep::integrate(stepper, sys, y, 0.0, 20.0, 1.0, [&](double t, const S3& u) {
-            const S3 x = odestep_test::exp_sin::exact(t);
-            for (std::size_t i = 0; i < 3; ++i) worst = std::fmax(worst, std::fabs(u[i] - x[i]));
-        });
-        REQUIRE(r.status == odestep::status::ok);
-        MESSAGE("rtol " << rtol << ": largest error over the grid " << worst);
-        CHECK(worst <= 100 * rtol);
-    }
+    (void)odestep_test::check_exp_sin_on_grid<odestep::sdirk4_substeps>(std::array<double, 3>{1e-4, 1e-6, 1e-8});
 }
 
 TEST_CASE("sdirk4: integrate_times interpolates by cubic Hermite: exact for y' = 3 t^2, 100 rtol on exp(sin t)") {
@@ -219,23 +208,8 @@ TEST_CASE("sdirk4_substeps: Prothero-Robinson with lambda = -1e6 on a 0.1 grid, 
 // ---- failures: a clear status, y bit for bit as it was
 
 TEST_CASE("sdirk4_substeps: NaN from f, NaN in the Jacobian, the attempt cap and bad settings leave y bit for bit") {
-    const auto jac = odestep_test::robertson_jacobian{};
     SUBCASE("f gives NaN past t = 1.05: non_finite on the interval that reaches it") {
-        auto f = [](double t, const S3& y, S3& d) {
-            odestep_test::robertson{}(t, y, d);
-            if (t > 1.05) d[1] = std::numeric_limits<double>::quiet_NaN();
-        };
-        odestep::sdirk4_substeps<S3> stepper(odestep::tolerances<S3>::uniform(1e-6, 1e-12));
-        S3 y{1, 0, 0};
-        const auto r = odestep::integrate(stepper, odestep::with_jacobian(f, jac), y, 0.0, 2.0, 0.1);
-        CHECK(r.status == odestep::status::non_finite);
-        CHECK(r.t == doctest::Approx(1.0));
-        // the state of the last good interval, bit for bit: the same run to t = 1
-        odestep::sdirk4_substeps<S3> again(odestep::tolerances<S3>::uniform(1e-6, 1e-12));
-        S3 z{1, 0, 0};
-        REQUIRE(odestep::integrate(again, odestep::with_jacobian(f, jac), z, 0.0, 1.0, 0.1).status ==
-                odestep::status::ok);
-        CHECK(odestep::detail::same_values(y, z));
+        odestep_test::check_nan_past_a_time<odestep::sdirk4_substeps>();
     }
     SUBCASE("f gives NaN at the start: non_finite, nothing changed") {
         auto f = [](double, const S3&, S3& d) { d = {std::numeric_limits<double>::quiet_NaN(), 0, 0}; };
@@ -245,39 +219,12 @@ TEST_CASE("sdirk4_substeps: NaN from f, NaN in the Jacobian, the attempt cap and
         CHECK(stepper.step(f, y, 0.0, 0.1) == odestep::status::non_finite);
         CHECK(odestep::detail::same_values(y, before));
     }
-    SUBCASE("a Jacobian with NaN: singular_matrix") {
-        auto bad = [](double, const S3&, odestep::jacobian_t<S3>& j) {
-            j = {};
-            j[1][1] = std::numeric_limits<double>::quiet_NaN();
-        };
-        odestep::sdirk4_substeps<S3> stepper;
-        S3 y{0.5, 1e-5, 0.5 - 1e-5};
-        const S3 before = y;
-        CHECK(stepper.step(odestep::with_jacobian(odestep_test::robertson{}, bad), y, 0.0, 0.1) ==
-              odestep::status::singular_matrix);
-        CHECK(odestep::detail::same_values(y, before));
-    }
+    SUBCASE("a Jacobian with NaN: singular_matrix") { odestep_test::check_nan_jacobian<odestep::sdirk4_substeps>(); }
     SUBCASE("the attempt cap: substep_limit, y as given") {
-        odestep::sdirk4_substeps<S3, 4> stepper(odestep::tolerances<S3>::uniform(1e-8, 1e-14));
-        S3 y{1, 0, 0};
-        const S3 before = y;
-        CHECK(stepper.step(odestep::with_jacobian(odestep_test::robertson{}, jac), y, 0.0, 1.0) ==
-              odestep::status::substep_limit);
-        CHECK(odestep::detail::same_values(y, before));
-        CHECK(stepper.set_max_attempts(5) == odestep::status::invalid_setting);
+        odestep_test::check_attempt_cap<odestep::sdirk4_substeps, 4>();
     }
     SUBCASE("bad settings are refused before anything is evaluated") {
-        std::size_t calls = 0;
-        auto f = odestep_test::counted(odestep_test::robertson{}, &calls);
-        odestep::sdirk4_substeps<S3> stepper(odestep::tolerances<S3>::uniform(-1.0, 1e-6));
-        S3 y{1, 0, 0};
-        CHECK(stepper.step(f, y, 0.0, 0.1) == odestep::status::invalid_tolerance);
-        stepper.engine().set_tolerance(odestep::tolerances<S3>::uniform(1e-6, 1e-6));
-        stepper.engine().set_jacobian_reuse_rate(1.5);
-        CHECK(stepper.step(f, y, 0.0, 0.1) == odestep::status::invalid_setting);
-        engine3 engine;
-        CHECK(odestep::integrate_adaptive(engine, f, y, 0.0, 1.0, 0).status == odestep::status::invalid_setting);
-        CHECK(calls == 0);
+        odestep_test::check_bad_newton_settings<odestep::sdirk4_substeps>();
     }
 }
 

@@ -133,8 +133,8 @@ constexpr T default_tolerance() noexcept {
 /// from that same y (compared bit for bit, so a caller that changed y between calls is never given a stale
 /// derivative) at that time (to four ULPs: the grid's t0 + (i + 1) dt and the interval's t + dt). No heap, no static state; a copy is an independent engine.
 template <class Method, class State>
-class adaptive_rk : public engine_settings<adaptive_rk<Method, State>, State, detail::pi_memory<value_type_t<State>>> {
-    using settings = engine_settings<adaptive_rk, State, detail::pi_memory<value_type_t<State>>>;
+class adaptive_rk : public engine_settings<adaptive_rk<Method, State>, State> {
+    using settings = engine_settings<adaptive_rk, State>;
 
 public:
     using state_type = State;                ///< the state, std::array<T, N>
@@ -185,21 +185,25 @@ public:
     template <class System, class Sink = detail::no_step_sink>
     status attempt(System& f, T& t, State& y, T t_end, bool& accepted, Sink&& sink = Sink{}) {
         accepted = false;
-        detail::attempt_plan<T> p(t, t_end);
-        if (p.span == T(0)) {
+        const T span = t_end - t;
+        if (span == T(0)) {
             accepted = true;
             return status::ok;
         }
+        const T dir = span > T(0) ? T(1) : T(-1);
+        const T rem = detail::abs_value(span);
         status s = first_stage(f, t, y);
         if (s != status::ok) return s;
-        p.mag = ctl_.h;
-        // f at the estimate's probe not finite: non_finite
-        if (!(p.mag > T(0)) && !p.estimate(f, t, y, k0_, estimate_order, tol_, control_)) return status::non_finite;
-        p.bound(control_);
+        T mag = ctl_.h;
+        if (!(mag > T(0))) {
+            mag = detail::first_step_size(f, t, y, k0_, estimate_order, tol_, control_, rem, dir);
+            if (!(mag > T(0))) return status::non_finite;  // f at the estimate's probe was not finite
+        }
+        const detail::step_plan<T> p = detail::plan_step(control_, mag, rem);
         // A rest too long to land on in one step is split into two equal steps.
         const bool last = p.last;
-        const T h = last ? p.span : p.split ? p.dir * (p.rem / T(2)) : p.dir * p.mag;
-        if (p.unresolved(h, t)) return status::step_too_small;
+        const T h = last ? span : p.split ? dir * (rem / T(2)) : dir * p.mag;
+        if (!last && detail::unresolved_step(h, t)) return status::step_too_small;
         std::array<State, pair::S> k;
         k[0] = k0_;
         State y_new{};  // written by pair::step (for FSAL in its stage loop, which GCC cannot always see)

@@ -9,7 +9,9 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 
+#include "../config.hpp"
 #include "../detail/grid_clock.hpp"
 #include "../detail/ops.hpp"
 #include "../state.hpp"
@@ -228,6 +230,10 @@ bool same_point_time(T a, T b) noexcept {
     return d <= T(4) * std::numeric_limits<T>::epsilon() * (abs_value(a) + abs_value(b));
 }
 
+// The memory of the Newton-based stiff engines (stiff/step_control.hpp).
+template <class T>
+struct stiff_step_control;
+
 /// What every error-controlled engine carries from one attempt to the next for its step size: the |h| to try
 /// next, whether the last attempt was rejected, the failed attempts in a row, and the rejections counted.
 template <class T>
@@ -272,11 +278,11 @@ struct pi_memory : step_memory<T> {
         this->failures = 0;
     }
     /// |h| step_factor after a step of size habs with error norm e (k the estimate's order).
-    T next_step(const step_control<T>& c, int k, T habs, T e) const noexcept {
+    ODESTEP_INLINE T next_step(const step_control<T>& c, int k, T habs, T e) const noexcept {
         return habs * step_factor(c, gains_for(c, k), k, e, err_prev, this->rejected_last);
     }
     /// Rejected by the error test (e > 1): the next |h| shrunk by step_factor.
-    status reject_error(const step_control<T>& c, int k, T habs, T e) noexcept {
+    ODESTEP_INLINE status reject_error(const step_control<T>& c, int k, T habs, T e) noexcept {
         return this->shrink(habs, step_factor(c, gains_for(c, k), k, e, err_prev, this->rejected_last));
     }
     /// Accepted with error norm e, the next |h| `next` (this step's size when next underflowed to zero: a zero
@@ -289,59 +295,60 @@ struct pi_memory : step_memory<T> {
     }
 };
 
-/// The size of one attempt from t toward t_end, as every error-controlled engine plans it: `mag` the
-/// controller's |h| within max_step; within 1% of t_end the step lands on it (`last`, no sliver is left)
-/// unless that would stretch it past max_step (`split`: the rest, at most 1.01 max_step, is more than one
-/// step).
+/// The first step's |h| for an attempt from (t, y) with f0 = f(t, y) over the rest `rem` of the interval in
+/// direction `dir` (initial_step for an estimate of order k, within rem and max_step); 0 when f at the
+/// estimate's probe was not finite.
+template <class State, class System, class T>
+T first_step_size(System& f, T t, const State& y, const State& f0, int k, const tolerances<State>& tol,
+                  const step_control<T>& c, T rem, T dir) {
+    T limit = rem;
+    if (c.max_step > T(0) && c.max_step < limit) limit = c.max_step;
+    return abs_value(initial_step(f, t, y, f0, k - 1, tol, limit, dir));
+}
+
+/// The size of one attempt as every error-controlled engine plans it: `mag` the controller's |h| within
+/// max_step; within 1% of the rest `rem` of the interval the step lands on its end (`last`, no sliver is
+/// left) unless that would stretch it past max_step (`split`: the rest, at most 1.01 max_step, is more than
+/// one step).
 template <class T>
-struct attempt_plan {
-    T span;              ///< t_end - t
-    T dir;               ///< the sign of span
-    T rem;               ///< |span|
-    T mag = T(0);        ///< |h| the controller asks for, within max_step
-    bool last = false;   ///< the step lands on t_end
-    bool split = false;  ///< near t_end, but landing would exceed max_step
-
-    attempt_plan(T t, T t_end) noexcept : span(t_end - t), dir(span > T(0) ? T(1) : T(-1)), rem(abs_value(span)) {}
-
-    /// The first-step estimate (initial_step for an estimate of order k, from f0 = f(t, y)) within the rest
-    /// of the interval and max_step: false when f at its probe was not finite.
-    template <class State, class System>
-    bool estimate(System& f, T t, const State& y, const State& f0, int k, const tolerances<State>& tol,
-                  const step_control<T>& c) {
-        T limit = rem;
-        if (c.max_step > T(0) && c.max_step < limit) limit = c.max_step;
-        mag = abs_value(initial_step(f, t, y, f0, k - 1, tol, limit, dir));
-        return mag > T(0);
-    }
-    /// mag within max_step, and whether the step lands on t_end (last) or splits the rest (split).
-    void bound(const step_control<T>& c) noexcept {
-        if (c.max_step > T(0) && mag > c.max_step) mag = c.max_step;
-        const bool near_end = mag + mag / T(100) >= rem;
-        split = near_end && c.max_step > T(0) && rem > c.max_step;
-        last = near_end && !split;
-    }
-    /// The controller's step h below ten ULPs of t: the run cannot resolve it. A step to t_end is the
-    /// caller's own interval, however short (an event's location re-steps to within ULPs of it).
-    bool unresolved(T h, T t) const noexcept {
-        return !last && !(abs_value(h) > T(10) * std::numeric_limits<T>::epsilon() * abs_value(t));
-    }
+struct step_plan {
+    T mag;       ///< |h| the controller asks for, within max_step
+    bool last;   ///< the step lands on the interval's end
+    bool split;  ///< near the end, but landing would exceed max_step
 };
+
+/// The plan for the controller's |h| `mag` and the rest `rem`.
+template <class T>
+step_plan<T> plan_step(const step_control<T>& c, T mag, T rem) noexcept {
+    if (c.max_step > T(0) && mag > c.max_step) mag = c.max_step;
+    const bool near_end = mag + mag / T(100) >= rem;
+    const bool split = near_end && c.max_step > T(0) && rem > c.max_step;
+    return {mag, near_end && !split, split};
+}
+
+/// The controller's step h below ten ULPs of t: the run cannot resolve it. (A step to the interval's end is
+/// the caller's own, however short: an event's location re-steps to within ULPs of it.)
+template <class T>
+bool unresolved_step(T h, T t) noexcept {
+    return !(abs_value(h) > T(10) * std::numeric_limits<T>::epsilon() * abs_value(t));
+}
 }  // namespace detail
 
 /// \brief The settings every error-controlled engine has (odestep::adaptive_rk, odestep::rosenbrock_adaptive,
 /// odestep::sdirk_adaptive, odestep::radau5): the tolerances, the controller's settings and the step size to
-/// try next, with what the engine carries between attempts for its step size (`Memory`).
+/// try next, with what the engine carries between attempts for its step size (the PI controller's memory,
+/// or with `Newton` that of Hairer's stiff codes, radau5.f's).
 ///
 /// `Engine` is the engine deriving from it; an engine that derives something from the tolerances (Radau's
 /// transformed tolerances, Newton's) has it recomputed through its `tolerance_changed()` on set_tolerance.
-template <class Engine, class State, class Memory>
+template <class Engine, class State, bool Newton = false>
 class engine_settings {
 public:
     using value_type = value_type_t<State>;  ///< the scalar T
 
 private:
     using T = value_type;
+    using memory_type = std::conditional_t<Newton, detail::stiff_step_control<T>, detail::pi_memory<T>>;
 
 public:
     /// status::invalid_tolerance, status::invalid_setting, or ok.
@@ -380,7 +387,7 @@ protected:
 
     tolerances<State> tol_;    ///< the tolerances
     step_control<T> control_;  ///< the controller's settings
-    Memory ctl_{};             ///< the step size and what the controller carries between attempts
+    memory_type ctl_{};        ///< the step size and what the controller carries between attempts
 };
 
 }  // namespace odestep

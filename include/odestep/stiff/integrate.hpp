@@ -26,22 +26,18 @@ namespace detail {
 // Hermite interpolant needs f at the step's ends. A stiff engine is one with this trait.
 template <class Engine>
 struct stiff_dense;
+template <class Dense>
+struct complete_dense {  // a dense output that needs no evaluation
+    using type = Dense;
+    template <class System>
+    static status complete(type&, System&) noexcept {
+        return status::ok;
+    }
+};
 template <class State>
-struct stiff_dense<radau5<State>> {
-    using type = radau5_dense<State>;
-    template <class System>
-    static status complete(type&, System&) noexcept {
-        return status::ok;
-    }
-};
+struct stiff_dense<radau5<State>> : complete_dense<radau5_dense<State>> {};
 template <class Method, class State>
-struct stiff_dense<sdirk_adaptive<Method, State>> {
-    using type = sdirk_dense<State>;
-    template <class System>
-    static status complete(type&, System&) noexcept {
-        return status::ok;
-    }
-};
+struct stiff_dense<sdirk_adaptive<Method, State>> : complete_dense<sdirk_dense<State>> {};
 template <class Method, class State>
 struct stiff_dense<rosenbrock_adaptive<Method, State>> {
     using type = rosenbrock_dense<State>;

@@ -130,7 +130,7 @@ private:
 template <class State>
 class radau5 : public newton_engine_settings<radau5<State>, State> {
     using settings = newton_engine_settings<radau5, State>;
-    friend class engine_settings<radau5, State, detail::stiff_step_control<value_type_t<State>>>;
+    friend class engine_settings<radau5, State, true>;
 
 public:
     using state_type = State;                ///< the state, std::array<T, N>
@@ -196,26 +196,30 @@ public:
     template <class System, class Sink = detail::no_step_sink>
     status attempt(System& f, T& t, State& y, T t_end, bool& accepted, Sink&& sink = Sink{}) {
         accepted = false;
-        detail::attempt_plan<T> p(t, t_end);
-        if (p.span == T(0)) {
+        const T span = t_end - t;
+        if (span == T(0)) {
             accepted = true;
             return status::ok;
         }
-        const T dir = p.dir;
+        const T dir = span > T(0) ? T(1) : T(-1);
+        const T rem = detail::abs_value(span);
         status s = prepare_point(f, t, y);
         if (s != status::ok) return s;
-        p.mag = ctl_.h;
-        if (!(p.mag > T(0)) && !p.estimate(f, t, y, f0_, estimate_order, tol_, control_)) return status::non_finite;
-        p.bound(control_);
+        T mag = ctl_.h;
+        if (!(mag > T(0))) {
+            mag = detail::first_step_size(f, t, y, f0_, estimate_order, tol_, control_, rem, dir);
+            if (!(mag > T(0))) return status::non_finite;
+        }
+        const detail::step_plan<T> p = detail::plan_step(control_, mag, rem);
         const bool last = p.last;
-        const T mag = p.mag;
-        T h = last ? p.span : dir * mag;
+        mag = p.mag;
+        T h = last ? span : dir * mag;
         if (!last && ctl_.keep_lu && lu_valid_ && h_lu_ * dir > T(0)) {
             // radau5.f: a step 1 to 1.2 times the factored one, with Newton fast, keeps the factorization.
             const T qt = mag / detail::abs_value(h_lu_);
-            if (qt >= T(1) && qt <= T(6) / T(5) && detail::abs_value(h_lu_) < p.rem) h = h_lu_;
+            if (qt >= T(1) && qt <= T(6) / T(5) && detail::abs_value(h_lu_) < rem) h = h_lu_;
         }
-        if (p.unresolved(h, t)) return status::step_too_small;
+        if (!last && detail::unresolved_step(h, t)) return status::step_too_small;
 
         if (ctl_.need_jacobian) {
             ++jacobians_;

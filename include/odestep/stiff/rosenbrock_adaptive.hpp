@@ -15,6 +15,7 @@
 #include "../state.hpp"
 #include "../status.hpp"
 #include "../system.hpp"
+#include "hermite_step.hpp"
 #include "step_control.hpp"
 
 namespace odestep {
@@ -26,56 +27,41 @@ namespace odestep {
 /// rhs_evals_to_complete evaluations per step. The engine's accept sink:
 /// `engine.attempt(f, t, y, t_end, accepted, dense)`, then `dense.complete(f)` and `dense.at(t, u)`.
 template <class State>
-class rosenbrock_dense {
+class rosenbrock_dense : public hermite_step<State> {
+    using T = value_type_t<State>;
+
 public:
-    using state_type = State;                ///< the state
-    using value_type = value_type_t<State>;  ///< its scalar T
     /// The most evaluations of f one complete() makes.
     static constexpr std::size_t rhs_evals_to_complete = 2;
 
-private:
-    using T = value_type;
-
-public:
     /// The accept sink: the step of size h from (t0, y0) to y1.
     void operator()(T t0, T h, const State& y0, const State& y1) noexcept {
         // f at this step's start is the completed previous step's end slope when the run is continuous
-        f0_valid_ = end_valid_ && detail::same_point_time(t0, t0_ + h_) && detail::same_values(y0, y1_);
-        if (f0_valid_) detail::assign(f0_, f1_);
+        f0_valid_ =
+            end_valid_ && detail::same_point_time(t0, this->t0_ + this->h_) && detail::same_values(y0, this->y1_);
+        if (f0_valid_) detail::assign(this->f0_, this->f1_);
         end_valid_ = false;
-        t0_ = t0;
-        h_ = h;
-        detail::assign(y0_, y0);
-        detail::assign(y1_, y1);
+        this->t0_ = t0;
+        this->h_ = h;
+        detail::assign(this->y0_, y0);
+        detail::assign(this->y1_, y1);
     }
     /// Evaluates what the interpolant needs (f at the step's ends): status::non_finite when f gives NaN or Inf.
     template <class System>
     status complete(System& f) {
         if (end_valid_) return status::ok;
         if (!f0_valid_) {
-            detail::evaluate(f, t0_, static_cast<const State&>(y0_), f0_);
-            if (!detail::all_finite(f0_)) return status::non_finite;
+            detail::evaluate(f, this->t0_, static_cast<const State&>(this->y0_), this->f0_);
+            if (!detail::all_finite(this->f0_)) return status::non_finite;
             f0_valid_ = true;
         }
-        detail::evaluate(f, t0_ + h_, static_cast<const State&>(y1_), f1_);
-        if (!detail::all_finite(f1_)) return status::non_finite;
+        detail::evaluate(f, this->t0_ + this->h_, static_cast<const State&>(this->y1_), this->f1_);
+        if (!detail::all_finite(this->f1_)) return status::non_finite;
         end_valid_ = true;
         return status::ok;
     }
-    /// The step's end time.
-    T t_end() const noexcept { return t0_ + h_; }
-    /// The step's size (signed).
-    T step() const noexcept { return h_; }
-    /// The interpolant at t (meant for t inside the step, after complete() returned ok).
-    void at(T t, State& out) const noexcept { hermite_cubic(y0_, f0_, y1_, f1_, h_, (t - t0_) / h_, out); }
 
 private:
-    T t0_ = T(0);
-    T h_ = T(1);
-    State y0_{};
-    State f0_{};
-    State y1_{};
-    State f1_{};
     bool f0_valid_ = false;
     bool end_valid_ = false;
 };
@@ -91,9 +77,8 @@ private:
 /// max_failures_in_a_row times in a row; then its status is returned. Every failure leaves y and t as they
 /// were. What it carries: the step size, the controller's memory; no heap, no static state.
 template <class Method, class State>
-class rosenbrock_adaptive
-    : public engine_settings<rosenbrock_adaptive<Method, State>, State, detail::pi_memory<value_type_t<State>>> {
-    using settings = engine_settings<rosenbrock_adaptive, State, detail::pi_memory<value_type_t<State>>>;
+class rosenbrock_adaptive : public engine_settings<rosenbrock_adaptive<Method, State>, State> {
+    using settings = engine_settings<rosenbrock_adaptive, State>;
 
 public:
     using state_type = State;                        ///< the state, std::array<T, N>
@@ -147,22 +132,25 @@ public:
     template <class System, class Sink = detail::no_step_sink>
     status attempt(System& f, T& t, State& y, T t_end, bool& accepted, Sink&& sink = Sink{}) {
         accepted = false;
-        detail::attempt_plan<T> p(t, t_end);
-        if (p.span == T(0)) {
+        const T span = t_end - t;
+        if (span == T(0)) {
             accepted = true;
             return status::ok;
         }
-        p.mag = ctl_.h;
-        if (!(p.mag > T(0))) {
+        const T dir = span > T(0) ? T(1) : T(-1);
+        const T rem = detail::abs_value(span);
+        T mag = ctl_.h;
+        if (!(mag > T(0))) {
             State f0;
             detail::evaluate(f, t, y, f0);
             if (!detail::all_finite(f0)) return status::non_finite;
-            if (!p.estimate(f, t, y, f0, estimate_order, tol_, control_)) return status::non_finite;
+            mag = detail::first_step_size(f, t, y, f0, estimate_order, tol_, control_, rem, dir);
+            if (!(mag > T(0))) return status::non_finite;
         }
-        p.bound(control_);
+        const detail::step_plan<T> p = detail::plan_step(control_, mag, rem);
         const bool last = p.last;
-        const T h = last ? p.span : p.dir * p.mag;
-        if (p.unresolved(h, t)) return status::step_too_small;
+        const T h = last ? span : dir * p.mag;
+        if (!last && detail::unresolved_step(h, t)) return status::step_too_small;
         State y_new = y;
         State err{};
         ++tried_;

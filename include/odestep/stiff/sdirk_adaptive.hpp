@@ -21,6 +21,7 @@
 #include "../status.hpp"
 #include "../system.hpp"
 #include "../tables/implicit_rk.hpp"
+#include "hermite_step.hpp"
 #include "radau5.hpp"
 #include "step_control.hpp"
 
@@ -32,38 +33,19 @@ namespace odestep {
 /// step's at its start, so no evaluation of f is added. The engine's accept sink:
 /// `engine.attempt(f, t, y, t_end, accepted, dense)`, then `dense.at(t, u)`.
 template <class State>
-class sdirk_dense {
-public:
-    using state_type = State;                ///< the state
-    using value_type = value_type_t<State>;  ///< its scalar T
-
-private:
-    using T = value_type;
+class sdirk_dense : public hermite_step<State> {
+    using T = value_type_t<State>;
 
 public:
     /// The accept sink: the step of size h from (t0, y0) with slope f0 to y1 with slope f1.
     void operator()(T t0, T h, const State& y0, const State& f0, const State& y1, const State& f1) noexcept {
-        t0_ = t0;
-        h_ = h;
-        detail::assign(y0_, y0);
-        detail::assign(f0_, f0);
-        detail::assign(y1_, y1);
-        detail::assign(f1_, f1);
+        this->t0_ = t0;
+        this->h_ = h;
+        detail::assign(this->y0_, y0);
+        detail::assign(this->f0_, f0);
+        detail::assign(this->y1_, y1);
+        detail::assign(this->f1_, f1);
     }
-    /// The step's end time.
-    T t_end() const noexcept { return t0_ + h_; }
-    /// The step's size (signed).
-    T step() const noexcept { return h_; }
-    /// The interpolant at t (meant for t inside the step).
-    void at(T t, State& out) const noexcept { hermite_cubic(y0_, f0_, y1_, f1_, h_, (t - t0_) / h_, out); }
-
-private:
-    T t0_ = T(0);
-    T h_ = T(1);
-    State y0_{};
-    State f0_{};
-    State y1_{};
-    State f1_{};
 };
 
 /// \brief Error-controlled stepping with an embedded SDIRK pair (`Method` a table tag whose table is lower
@@ -100,7 +82,7 @@ private:
 template <class Method, class State>
 class sdirk_adaptive : public newton_engine_settings<sdirk_adaptive<Method, State>, State> {
     using settings = newton_engine_settings<sdirk_adaptive, State>;
-    friend class engine_settings<sdirk_adaptive, State, detail::stiff_step_control<value_type_t<State>>>;
+    friend class engine_settings<sdirk_adaptive, State, true>;
 
 public:
     using state_type = State;                ///< the state, std::array<T, N>
@@ -173,26 +155,30 @@ public:
     template <class System, class Sink = detail::no_step_sink>
     status attempt(System& f, T& t, State& y, T t_end, bool& accepted, Sink&& sink = Sink{}) {
         accepted = false;
-        detail::attempt_plan<T> p(t, t_end);
-        if (p.span == T(0)) {
+        const T span = t_end - t;
+        if (span == T(0)) {
             accepted = true;
             return status::ok;
         }
-        const T dir = p.dir;
+        const T dir = span > T(0) ? T(1) : T(-1);
+        const T rem = detail::abs_value(span);
         status s = prepare_point(f, t, y);
         if (s != status::ok) return s;
-        p.mag = ctl_.h;
-        if (!(p.mag > T(0)) && !p.estimate(f, t, y, slope_, estimate_order, tol_, control_)) return status::non_finite;
-        p.bound(control_);
+        T mag = ctl_.h;
+        if (!(mag > T(0))) {
+            mag = detail::first_step_size(f, t, y, slope_, estimate_order, tol_, control_, rem, dir);
+            if (!(mag > T(0))) return status::non_finite;
+        }
+        const detail::step_plan<T> p = detail::plan_step(control_, mag, rem);
         const bool last = p.last;
-        const T mag = p.mag;
-        T h = last ? p.span : dir * mag;
+        mag = p.mag;
+        T h = last ? span : dir * mag;
         if (!last && ctl_.keep_lu && lu_valid_ && h_lu_ * dir > T(0)) {
             // as radau5: a step 1 to 1.2 times the factored one, with Newton fast, keeps the factorization
             const T qt = mag / detail::abs_value(h_lu_);
-            if (qt >= T(1) && qt <= T(6) / T(5) && detail::abs_value(h_lu_) < p.rem) h = h_lu_;
+            if (qt >= T(1) && qt <= T(6) / T(5) && detail::abs_value(h_lu_) < rem) h = h_lu_;
         }
-        if (p.unresolved(h, t)) return status::step_too_small;
+        if (!last && detail::unresolved_step(h, t)) return status::step_too_small;
 
         if (ctl_.need_jacobian) {
             if constexpr (jacobian_rhs_evals_v<System, State> != 0) {

@@ -109,8 +109,8 @@ namespace odestep {
 /// \brief The settings of the Newton-based stiff engines (odestep::radau5, odestep::sdirk_adaptive): those of
 /// odestep::engine_settings and Newton's contraction rate below which an accepted step keeps its Jacobian.
 template <class Engine, class State>
-class newton_engine_settings : public engine_settings<Engine, State, detail::stiff_step_control<value_type_t<State>>> {
-    using base = engine_settings<Engine, State, detail::stiff_step_control<value_type_t<State>>>;
+class newton_engine_settings : public engine_settings<Engine, State, true> {
+    using base = engine_settings<Engine, State, true>;
 
 public:
     using value_type = value_type_t<State>;  ///< the scalar T
@@ -122,10 +122,9 @@ public:
     /// status::invalid_tolerance, status::invalid_setting (a controller setting, or jacobian_reuse_rate()
     /// outside (0, 1)), or ok.
     status settings_status() const noexcept {
-        const status s = this->tol_.check();
+        const status s = base::settings_status();
         if (s != status::ok) return s;
-        if (!(theta_keep_ > T(0) && theta_keep_ < T(1))) return status::invalid_setting;
-        return this->control_.check();
+        return theta_keep_ > T(0) && theta_keep_ < T(1) ? status::ok : status::invalid_setting;
     }
     /// Newton's contraction rate theta below which an accepted step keeps its Jacobian for the next one
     /// (radau5.f's WORK(3)); default 0.1, the value radau5.f recommends when a Jacobian is costly (it
