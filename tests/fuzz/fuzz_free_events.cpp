@@ -226,6 +226,8 @@ void twins(const Engine& after, const Engine& before, const Set& set, const scri
            const state<T>& y0) {
     const counter<T> saved = count;
     count.pure = true;
+    count.max_firings = 0;  // (two runs' firings on one counter: the rules are checked in the run itself)
+    count.dead_time = T(0);
     count.window_start = T(0);
     count.t1 = T(1);
     count.forward = true;
