@@ -239,7 +239,9 @@ void twins(const Engine& after, const Engine& before, const Set& set, const scri
         c.poison_count = 0;
         c.budget = std::numeric_limits<unsigned>::max();
         auto rhs = [&c](T t, const state<T>& x) { return c(t, x); };
-        return odestep::integrate_adaptive(engine, rhs, y, T(0), T(1), events);
+        // (64 attempts: a drawn f can need millions of steps over [0, 1], and the twin asks only for the same bits)
+        return odestep::integrate_adaptive(
+            engine, rhs, y, T(0), T(1), events, [](T, const state<T>&) {}, 64);
     };
     state<T> ya = start;
     state<T> yb = start;
