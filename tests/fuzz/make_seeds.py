@@ -151,8 +151,8 @@ def steps_boris(which, sequence, qm=(1,)):
 EVENTS = ["rk4", "midpoint", "dormand_prince54", "abm4", "velocity_verlet", "newtonian_euler_richardson"]
 
 
-def g(kind, k, c):
-    return b(kind, k) + num(c) + b(1)  # no poison
+def g(kind, k, c, number=num):
+    return b(kind, k) + number(c) + b(1)  # no poison
 
 
 def events(stepper, tail, y=((1, 0),), shape=2, action=b(1, 1) + num(0.5), f=None, gs=None, interpolant=False,
@@ -171,12 +171,82 @@ def events(stepper, tail, y=((1, 0),), shape=2, action=b(1, 1) + num(0.5), f=Non
     return out + b(0) + tail
 
 
-def events_integrate(t0, dt, t1):
-    return b(1) + num(t0) + num(dt) + b(0) + num(t1)
+def events_integrate(t0, dt, t1, number=num):
+    return b(1) + number(t0) + number(dt) + b(0) + number(t1)
 
 
-def events_ticks(t0, dt, ticks, before=False):
-    return b(0) + b(1 if before else 0) + num(t0) + num(dt) + b(ticks - 1) + b(1) * ticks
+def events_ticks(t0, dt, ticks, before=False, number=num):
+    return b(0) + b(1 if before else 0) + number(t0) + number(dt) + b(ticks - 1) + b(1) * ticks
+
+
+# fuzz_events' wide sweep (selector 12, the entry, the location mode), in the order of `wide` there.
+WIDE = ["rk4_float", "midpoint_float", "dormand_prince54_float", "abm4_float", "velocity_verlet_float",
+        "newtonian_euler_richardson_float", "backward_euler", "dp54_substeps", "ab2_midpoint", "beeman",
+        "predictor_corrector", "leapfrog_position_form"]
+WIDE_NEWTONIAN = {"velocity_verlet_float", "newtonian_euler_richardson_float", "beeman", "predictor_corrector",
+                  "leapfrog_position_form"}
+
+
+def wide(entry, tail, interpolant=False):
+    """The ball-like seed of events(), through the wide sweep's selector: the whole set of three events."""
+    number = numf if entry.endswith("_float") else num
+    newtonian = entry in WIDE_NEWTONIAN
+    out = b(12, WIDE.index(entry), 1 if interpolant else 0) + script(a=((0, 1), (-1, 0)), number=number)
+    out += g(0, 0, 0, number) + g(0, 1, 0, number) + g(1, 0, 1e9 if number is num else 1e30, number)
+    out += b(1, 1) + number(0.5)
+    for direction in (1, 2, 2):
+        out += b(direction) + b(1)
+    out += b(2)
+    for state in ((1, 0), (0, 1)) if newtonian else ((1, 0),):
+        out += number(state[0]) + number(state[1])
+    return out + b(0) + tail
+
+
+# fuzz_free_events: the engine, f, tolerances, a step size, three g, the action, directions and settings, the
+# limits, y, t0, the span or four output times, the cap on attempts.
+FREE = ["dp5", "dp5_float", "dop853", "bs32_itp", "radau5", "dp5_bisection"]
+
+
+def free_events(engine, t0, t1=None, times=None, attempts=150, y=(1, 0), f=None, gs=None, action=None,
+                directions=(1, 2, 2)):
+    number = numf if engine.endswith("_float") else num
+    out = b(FREE.index(engine)) + (f if f is not None else script(a=((0, 1), (-1, 0)), number=number))
+    out += number(1e-6) + number(1e-6) + b(0)
+    out += gs if gs is not None else g(0, 0, 0, number) + g(0, 1, 0, number) + g(1, 0, 1e9, number)
+    out += action if action is not None else b(1, 1) + number(0.5)
+    for direction in directions:
+        out += b(direction) + b(1)
+    out += b(0) + number(y[0]) + number(y[1]) + number(t0)
+    if times is None:
+        out += b(0) + b(1) + number(t1)
+    else:
+        out += b(1) + b"".join(b(1) + number(t) for t in times)
+    return out + b(attempts)
+
+
+# fuzz_c_api's event loops (first byte odd): f over ODESTEP_C_MAX_STATES components, the method, n, (Newtonian
+# flag), the events, the limits, x and v, t0, dt, a tick before start, the ticks.
+C_MAX_STATES = 8
+C_METHODS = ["euler", "euler_richardson", "heun", "rk4", "bs32", "dp54", "dop853", "ab4", "abm4", "euler_cromer",
+             "velocity_verlet", "forest_ruth"]
+
+
+def c_events(method, n, evs, t0, dt, ticks, x=(1, 0), v=(0, 1), newtonian=False):
+    """evs: (kind, k, c, choice, r, direction) each; choice 0 terminal, 1 proceed, 2 bounce, 3 stop, 4 jump."""
+    a = tuple(tuple(1 if j == i + 1 else (-1 if j == i - 1 else 0) for j in range(C_MAX_STATES))
+              for i in range(C_MAX_STATES))
+    out = b(1) + script(a=a, n=C_MAX_STATES) + b(C_METHODS.index(method), n)
+    if method in ("euler_cromer", "velocity_verlet", "forest_ruth"):
+        out += b(1 if newtonian else 0)
+    out += b(len(evs))
+    for kind, k, c, choice, r, direction in evs:
+        out += b(kind, k) + num(c) + b(choice) + num(r) + b(0, direction, 1)
+    out += b(0)  # default limits
+    for i in range(n):
+        out += num(x[i] if i < len(x) else 0)
+    for i in range(n):
+        out += num(v[i] if i < len(v) else 0)
+    return out + num(t0) + num(dt) + b(1) + b(ticks - 1) + b(1) * ticks
 
 
 def write(target, name, data):
@@ -233,6 +303,37 @@ def main():
           events("rk4", events_integrate(0, 1e10, 1e10), y=((1e260, 0),), f=script(a=((1, 0), (0, 0))),
                  gs=g(1, 0, 5e9) + g(1, 0, 1e300) + g(1, 0, 1e300), interpolant=True, directions=(0, 2, 2),
                  action=b(0, 0) + num(0)))
+
+    # B: a stopping action that sets y_0 = 100 at a root located at a step's start. y' = (1, 0) from (0, 3),
+    # g = y0 y1 - (1.5 + 2^-52) rising: g(0.5) < 0 < g(0.5 + 2^-53), so the root lies strictly between the
+    # grid time 0.5 and the next double and is located at the step's start (tests/events/issue24_test.cpp);
+    # the run handed back y_0 = 100 while its last observation at 0.5 was the old state. Both location modes.
+    clock = script(mode=1, bvec=(1, 0))
+    root_between = g(2, 0, 1.5 + 2.0 ** -52) + g(1, 0, 1e9) + g(1, 0, 1e9)
+    for mode, interpolant in (("restep", False), ("interpolant", True)):
+        write("fuzz_events", "regression-issue24-B-stop-action-at-step-start-" + mode,
+              events("rk4", events_integrate(0, 0.25, 1), y=((0, 3),), f=clock, gs=root_between,
+                     interpolant=interpolant, directions=(0, 2, 2), shape=0, action=b(2, 0) + num(100)))
+    # The wide sweep, every entry in both location modes; the free-running loops; the C event loops.
+    for entry in WIDE:
+        number = numf if entry.endswith("_float") else num
+        for mode, interpolant in (("restep", False), ("interpolant", True)):
+            write("fuzz_events", "seed-wide-%s-%s" % (entry, mode),
+                  wide(entry, events_integrate(0, 0.125, 8, number=number), interpolant=interpolant))
+        write("fuzz_events", "seed-wide-ticks-%s" % entry, wide(entry, events_ticks(0, 0.125, 32, number=number)))
+    for engine in FREE:
+        write("fuzz_free_events", "seed-" + engine, free_events(engine, 0, t1=10))
+        write("fuzz_free_events", "seed-" + engine + "-times", free_events(engine, 0, times=(0, 0.5, 2.5, 10)))
+    # The README's ball on the free-running loop: y = (height, velocity), y' = (v, -9.81), a bounce at y0 = 0.
+    ball = script(mode=0, a=((0, 1), (0, 0)), bvec=(0, -9.81))
+    write("fuzz_free_events", "seed-ball-dp5", free_events("dp5", 0, t1=10, f=ball, attempts=199))
+    write("fuzz_free_events", "seed-ball-radau5", free_events("radau5", 0, t1=10, f=ball, attempts=199))
+    for method in ("rk4", "dp54", "abm4", "euler"):
+        write("fuzz_c_api", "seed-events-" + method,
+              c_events(method, 2, [(0, 0, 0, 2, 0.5, 1), (1, 0, 0.3, 0, 0, 0)], 0, 0.125, 32))
+    for method in ("velocity_verlet", "forest_ruth", "euler_cromer"):
+        write("fuzz_c_api", "seed-events-newton-" + method,
+              c_events(method, 2, [(0, 0, 0, 2, 0.5, 1), (0, 2, 0, 1, 0, 2)], 0, 0.125, 32, newtonian=True))
 
     # Regressions: issue 20's defects 1 to 7, and what the targets found.
     # 1: a NaN from f in the midpoint rule's zero-weight stage, f ignoring y: ok before the fix.
