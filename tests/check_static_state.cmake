@@ -1,11 +1,8 @@
 # SPDX-License-Identifier: BSL-1.0
 # Fails when the object file holds any symbol in a writable data section (.data, .bss and their
 # per-symbol variants): the library must keep no mutable static state. Run with -DOBJECT=... -DOBJDUMP=...
-execute_process(COMMAND ${OBJDUMP} -t -C ${OBJECT} OUTPUT_VARIABLE table RESULT_VARIABLE rc)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "objdump failed on ${OBJECT}")
-endif()
-string(REPLACE "\n" ";" lines "${table}")
+include(${CMAKE_CURRENT_LIST_DIR}/objdump_symbols.cmake)
+odestep_objdump_symbols(lines)
 set(found "")
 foreach(line IN LISTS lines)
   # objdump -t: address, flags, section, size, name. Variables are the object ('O') symbols; section
