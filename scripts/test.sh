@@ -81,7 +81,7 @@ else
   done
   # libFuzzer targets for the loops, the steps and the event loops, about a minute in all; any finding fails.
   run fuzz scripts/fuzz.sh --quick
-  # The same portable tests cross-compiled and run on emulated Cortex-M3/M4F/M7/M33/M55 (M0+ built only),
+  # The same portable tests cross-compiled and run on emulated Cortex-M3/M4F/M7/M33/M55,
   # then the firmware audit: no heap, no double arithmetic in float builds, flash and stack per stepper.
   run cortex-m scripts/test-targets.sh
   # A small runner on the Cortex-M0 (QEMU microbit), its float results bit for bit the host's (tests/m0/).
