@@ -42,18 +42,20 @@ total_start=$SECONDS
 # The test command leaves the work tree as it found it (build/ aside): its state now, compared at the end.
 mkdir -p build
 scripts/check_clean_tree.sh --save build/work_tree_before.txt
-cpu_seconds() {  # the CPU time (user + sys) of this shell's finished children so far, whole seconds
-  times | awk 'NR == 2 { t = 0; for (i = 1; i <= 2; ++i) { split($i, a, /[ms]/); t += 60 * a[1] + a[2] } printf "%d", t }'
+cpu_now() {  # cpu=: the CPU time (user + sys) of this shell's finished children so far, whole seconds
+  times > build/test_times.txt  # `times` in this shell: in a $(...) subshell it would count the subshell's
+  cpu=$(awk 'NR == 2 { t = 0; for (i = 1; i <= 2; ++i) { split($i, a, /[ms]/); t += 60 * a[1] + a[2] } printf "%d", t }' \
+    build/test_times.txt)
 }
 run() {  # run NAME COMMAND...: wall time on the ok/FAILED line, CPU time (on a shared machine, the cost) after it
   local name=$1; shift
   local start=$SECONDS cpu_start status
-  cpu_start=$(cpu_seconds)
+  cpu_now; cpu_start=$cpu
   echo "===== $name"
   if "$@"; then passed=$((passed + 1)); status=ok
   else failed=$((failed + 1)); failures+=("$name"); status=FAILED; fi
   echo "===== $name: $status ($((SECONDS - start)) s)"
-  echo "== $name: CPU $(($(cpu_seconds) - cpu_start)) s (user + sys)"
+  cpu_now; echo "== $name: CPU $((cpu - cpu_start)) s (user + sys)"
 }
 # host_preset CONFIGURE [BUILD TEST]: configure, build and test one host preset, printing each part's time.
 host_preset() {
@@ -99,7 +101,7 @@ fi
 run clean-tree scripts/check_clean_tree.sh --check build/work_tree_before.txt
 
 echo
-echo "test ($tier): $((SECONDS - total_start)) s, CPU $(cpu_seconds) s (user + sys)"
+cpu_now; echo "test ($tier): $((SECONDS - total_start)) s, CPU $cpu s (user + sys)"
 [ $failed -eq 0 ] || echo "failed: ${failures[*]}"
 echo "test: $passed passed, $failed failed"
 [ $failed -eq 0 ]
