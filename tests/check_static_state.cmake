@@ -9,10 +9,11 @@ foreach(line IN LISTS lines)
   # symbols ('d') appear for every section, including those a sanitizer adds, and are not state.
   # .data.rel.ro is read-only once relocated (RELRO): a constant that holds addresses (the C API's method
   # tables, in a position-independent build) lives there, not mutable state.
-  # AddressSanitizer's own one-byte ODR indicators (__odr_asan.NAME, one per global) are the sanitizer's, not
-  # the library's.
+  # AddressSanitizer's own one-byte ODR indicators (__odr_asan.NAME, one per global, under g++) and clang's
+  # sanitizer data (local __unnamed_N: the globals' descriptors, UBSan's source locations, which it writes to
+  # report each once) are the sanitizer's, not the library's: a variable of the library has a name.
   if(line MATCHES " O[ \t]+\\.(data|bss|tbss|tdata)(\\.[^ \t]*)?[ \t]" AND NOT line MATCHES " O[ \t]+\\.data\\.rel\\.ro"
-     AND NOT line MATCHES "[ \t]__odr_asan\\.")
+     AND NOT line MATCHES "[ \t]__odr_asan\\." AND NOT line MATCHES "^[0-9a-f]+ l .*[ \t]__unnamed_[0-9]+$")
     string(APPEND found "${line}\n")
   endif()
 endforeach()
