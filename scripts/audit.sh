@@ -138,18 +138,23 @@ wait
   echo "|---|---|---:|---:|---:|---|---|---|"
 } > "$report"
 
-for core in cortex-m0plus cortex-m3 cortex-m4f cortex-m33; do
-  read -r -a cpu <<< "$(setting "$core" ODESTEP_TARGET_CPU_FLAGS)"
-  machine=$(setting "$core" ODESTEP_TARGET_QEMU_MACHINE)
-  image=$out/firmware_loop-$core.elf
-  if [[ ! -f "$image" ]]; then
-    cat "$out/firmware_loop-$core.log" >&2
-    fail "$core: firmware_loop does not build or link without an allocator"
-    echo "| $core | \`${cpu[*]}\` | - | - | - | link FAILED | - | - |" >> "$report"
-    continue
-  fi
-  check_image firmware_loop "$core" "$image" "$machine" "${cpu[*]}"
-done
+# check_images NAME: each core's image $out/NAME-<core>.elf checked and its row written, or its build log shown.
+check_images() {
+  local name=$1 core cpu machine image
+  for core in cortex-m0plus cortex-m3 cortex-m4f cortex-m33; do
+    read -r -a cpu <<< "$(setting "$core" ODESTEP_TARGET_CPU_FLAGS)"
+    machine=$(setting "$core" ODESTEP_TARGET_QEMU_MACHINE)
+    image=$out/$name-$core.elf
+    if [[ ! -f "$image" ]]; then
+      cat "$out/$name-$core.log" >&2
+      fail "$core: $name does not build or link without an allocator"
+      echo "| $core | \`${cpu[*]}\` | - | - | - | link FAILED | - | - |" >> "$report"
+      continue
+    fi
+    check_image "$name" "$core" "$image" "$machine" "${cpu[*]}"
+  done
+}
+check_images firmware_loop
 
 # --- 1b: the C firmware example (examples/c_firmware.c on the C API, odestep::odestep_c from src/) ---
 {
@@ -159,19 +164,7 @@ done
   echo "| core | flags | .text | .data | .bss | allocator / C++ runtime symbols | \`__aeabi_d*\` | QEMU run |"
   echo "|---|---|---:|---:|---:|---|---|---|"
 } >> "$report"
-for core in cortex-m0plus cortex-m3 cortex-m4f cortex-m33; do
-  read -r -a cpu <<< "$(setting "$core" ODESTEP_TARGET_CPU_FLAGS)"
-  machine=$(setting "$core" ODESTEP_TARGET_QEMU_MACHINE)
-  objects=$out/c_firmware-$core
-  image=$out/c_firmware-$core.elf
-  if [[ ! -f "$image" ]]; then
-    cat "$objects.log" >&2
-    fail "$core: c_firmware does not build or link without an allocator"
-    echo "| $core | \`${cpu[*]}\` | - | - | - | link FAILED | - | - |" >> "$report"
-    continue
-  fi
-  check_image c_firmware "$core" "$image" "$machine" "${cpu[*]}"
-done
+check_images c_firmware
 
 # --- 2 and 3: one translation unit per (core, type, optimisation) with a step() wrapper per stepper ---
 methods=$(sed -n 's/^using [a-z0-9_]* = explicit_rk<tables::\([a-z0-9_]*\), State>;$/\1/p' \

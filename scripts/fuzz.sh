@@ -65,27 +65,50 @@ if ! "$cxx" -fsanitize=fuzzer "$probe" -o "$dir/probe" > "$dir/probe.log" 2>&1; 
 fi
 flags=(-std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
   -Wall -Wextra -Werror -I"$root/include")
-built=0
-pids=()
+# Every translation unit on its own (fuzz_c_api's nine, the library's sources in src/ and its target, would
+# otherwise compile one after the other), JOBS at a time, the longest first; then each target is linked.
+stale=()
 for t in "${targets[@]}"; do
   # Rebuild when the target, the shared checks or any header is newer than the binary.
-  # fuzz_c_api calls the C API: the library's sources (src/) are built into it.
-  extra=()
-  [ "$t" = fuzz_c_api ] && extra=("$root"/src/*.cpp)
   if [ -x "$dir/$t" ] && [ -z "$(find "$root/tests/fuzz/$t.cpp" "$root/tests/fuzz/fuzz_support.hpp" "$root/include" \
     "$root/src" -newer "$dir/$t" -print -quit)" ]; then
     continue
   fi
-  ("$cxx" "${flags[@]}" "$root/tests/fuzz/$t.cpp" "${extra[@]}" -o "$dir/$t.new" > "$dir/$t.build.log" 2>&1 &&
-    mv "$dir/$t.new" "$dir/$t") &
-  pids+=($!)
-  # JOBS compilations at a time
-  if [ ${#pids[@]} -ge "$jobs" ]; then
-    wait "${pids[0]}" || built=1
-    pids=("${pids[@]:1}")
+  stale+=("$t")
+done
+objects_of() {  # objects_of TARGET: the target's source and, for fuzz_c_api (it calls the C API), src/*.cpp
+  local s
+  echo "$1"
+  if [ "$1" = fuzz_c_api ]; then for s in "$root"/src/*.cpp; do echo "src_$(basename "$s" .cpp)"; done; fi
+}
+source_of() {  # source_of OBJECT
+  case "$1" in src_*) echo "$root/src/${1#src_}.cpp" ;; *) echo "$root/tests/fuzz/$1.cpp" ;; esac
+}
+units=()
+for t in "${stale[@]}"; do [ "$t" = fuzz_c_api ] && mapfile -t units < <(objects_of "$t"); done
+for t in "${stale[@]}"; do [ "$t" = fuzz_c_api ] || units+=("$t"); done
+mkdir -p "$dir/obj"
+for u in "${units[@]}"; do
+  rm -f "$dir/obj/$u.o"
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
+  ("$cxx" "${flags[@]}" -c "$(source_of "$u")" -o "$dir/obj/$u.o.new" > "$dir/obj/$u.log" 2>&1 &&
+    mv "$dir/obj/$u.o.new" "$dir/obj/$u.o") &
+done
+wait
+built=0
+for t in "${stale[@]}"; do
+  objects=()
+  : > "$dir/$t.build.log"
+  for u in $(objects_of "$t"); do
+    [ -f "$dir/obj/$u.o" ] || cat "$dir/obj/$u.log" >> "$dir/$t.build.log"
+    objects+=("$dir/obj/$u.o")
+  done
+  if [ -s "$dir/$t.build.log" ] || ! "$cxx" "${flags[@]}" "${objects[@]}" -o "$dir/$t.new" >> "$dir/$t.build.log" 2>&1; then
+    built=1
+  else
+    mv "$dir/$t.new" "$dir/$t"
   fi
 done
-for p in "${pids[@]}"; do wait "$p" || built=1; done
 if [ $built -ne 0 ]; then
   for t in "${targets[@]}"; do
     [ -s "$dir/$t.build.log" ] && { echo "fuzz: building $t:" >&2; cat "$dir/$t.build.log" >&2; }

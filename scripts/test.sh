@@ -42,12 +42,20 @@ total_start=$SECONDS
 # The test command leaves the work tree as it found it (build/ aside): its state now, compared at the end.
 mkdir -p build
 scripts/check_clean_tree.sh --save build/work_tree_before.txt
-run() {  # run NAME COMMAND...
+cpu_now() {  # cpu=: the CPU time (user + sys) of this shell's finished children so far, whole seconds
+  times > build/test_times.txt  # `times` in this shell: in a $(...) subshell it would count the subshell's
+  cpu=$(awk 'NR == 2 { t = 0; for (i = 1; i <= 2; ++i) { split($i, a, /[ms]/); t += 60 * a[1] + a[2] } printf "%d", t }' \
+    build/test_times.txt)
+}
+run() {  # run NAME COMMAND...: wall time on the ok/FAILED line, CPU time (on a shared machine, the cost) after it
   local name=$1; shift
-  local start=$SECONDS
+  local start=$SECONDS cpu_start status
+  cpu_now; cpu_start=$cpu
   echo "===== $name"
-  if "$@"; then passed=$((passed + 1)); echo "===== $name: ok ($((SECONDS - start)) s)"
-  else failed=$((failed + 1)); failures+=("$name"); echo "===== $name: FAILED ($((SECONDS - start)) s)"; fi
+  if "$@"; then passed=$((passed + 1)); status=ok
+  else failed=$((failed + 1)); failures+=("$name"); status=FAILED; fi
+  echo "===== $name: $status ($((SECONDS - start)) s)"
+  cpu_now; echo "== $name: CPU $((cpu - cpu_start)) s (user + sys)"
 }
 # host_preset CONFIGURE [BUILD TEST]: configure, build and test one host preset, printing each part's time.
 host_preset() {
@@ -81,7 +89,7 @@ else
   done
   # libFuzzer targets for the loops, the steps and the event loops, about a minute in all; any finding fails.
   run fuzz scripts/fuzz.sh --quick
-  # The same portable tests cross-compiled and run on emulated Cortex-M3/M4F/M7/M33/M55 (M0+ built only),
+  # The same portable tests cross-compiled and run on emulated Cortex-M3/M4F/M7/M33/M55,
   # then the firmware audit: no heap, no double arithmetic in float builds, flash and stack per stepper.
   run cortex-m scripts/test-targets.sh
   # A small runner on the Cortex-M0 (QEMU microbit), its float results bit for bit the host's (tests/m0/).
@@ -94,7 +102,7 @@ run perf-gate scripts/perf_gate.sh  # instruction counts (valgrind): large state
 run clean-tree scripts/check_clean_tree.sh --check build/work_tree_before.txt
 
 echo
-echo "test ($tier): $((SECONDS - total_start)) s"
+cpu_now; echo "test ($tier): $((SECONDS - total_start)) s, CPU $cpu s (user + sys)"
 [ $failed -eq 0 ] || echo "failed: ${failures[*]}"
 echo "test: $passed passed, $failed failed"
 [ $failed -eq 0 ]

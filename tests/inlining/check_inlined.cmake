@@ -2,11 +2,8 @@
 # Fails when the object file defines any function of the library's internals (odestep::detail::...) out of
 # line: every step in tests/inlining/both_policies_unit.cpp must inline its stage loop and sums.
 # Run with -DOBJECT=... -DOBJDUMP=...
-execute_process(COMMAND ${OBJDUMP} -t -C ${OBJECT} OUTPUT_VARIABLE table RESULT_VARIABLE rc)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "objdump failed on ${OBJECT}")
-endif()
-string(REPLACE "\n" ";" lines "${table}")
+include(${CMAKE_CURRENT_LIST_DIR}/../objdump_symbols.cmake)
+odestep_objdump_symbols(lines)
 set(found "")
 foreach(line IN LISTS lines)
   # objdump -t: address, flags, section, size, name; functions are the 'F' symbols.
