@@ -184,6 +184,7 @@ struct observer {
     odestep::direction dir = odestep::direction::either;
     T g_last = T(0);
     unsigned actions_last = 0;
+    unsigned actions_before_last = 0;
 
     bool along(T a, T b) const { return t1 < t0 ? a >= b : a <= b; }
 
@@ -200,14 +201,20 @@ struct observer {
         ODESTEP_FUZZ_CHECK(finite(y) || (t == t0 && same_bits(y, initial)), "an observed state not finite");
         if (watch && times == nullptr) {
             const T now = g(t, y);
+            // A crossing located to adjacent times of T may be fired at the left one, before g changes sign
+            // there: the step after it, one ULP of t long when the root is that close, carries the crossing
+            // already fired (fuzz_free_events found this in float at t = 10, where g fell by 1.2 in one ULP).
+            const bool fired_ulp_ago =
+                observed >= 1 && count->actions != actions_before_last && t == std::nextafter(last_t, t1);
             const bool falls = g_last > T(0) && now < T(0);
             const bool rises = g_last < T(0) && now > T(0);
             const bool crossed = dir == odestep::direction::falling  ? falls
                                  : dir == odestep::direction::rising ? rises
                                                                      : falls || rises;
-            ODESTEP_FUZZ_CHECK(!(observed >= 2 && crossed) || count->actions != actions_last,
+            ODESTEP_FUZZ_CHECK(!(observed >= 2 && crossed && !fired_ulp_ago) || count->actions != actions_last,
                                "g crossed between two observations and its event did not fire");
             g_last = now;
+            actions_before_last = actions_last;
             actions_last = count->actions;
         }
         f->mark();
