@@ -166,6 +166,17 @@ check_images firmware_loop
 } >> "$report"
 check_images c_firmware
 
+# step_wrappers PARAMETERS CALL STEPPER...: per stepper, the extern "C" audit_step_<stepper>(PARAMETERS) that
+# returns CALL, @ standing for the stepper's name in both (the units' symbols the sections below measure).
+step_wrappers() {
+  local parameters=$1 call=$2 m
+  shift 2
+  for m in "$@"; do
+    echo "extern \"C\" __attribute__((noinline, used)) odestep::status audit_step_$m(${parameters//@/$m}) {"
+    echo "  return ${call//@/$m};"
+    echo "}"
+  done
+}
 # --- 2 and 3: one translation unit per (core, type, optimisation) with a step() wrapper per stepper ---
 methods=$(sed -n 's/^using [a-z0-9_]* = explicit_rk<tables::\([a-z0-9_]*\), State>;$/\1/p' \
             "$root/include/odestep/rk/explicit_rk.hpp" | awk '!seen[$0]++')
@@ -184,11 +195,7 @@ unit=$out/step_unit.cpp
   echo "    d[3] = y[0] - AUDIT_T(2) * y[2] - AUDIT_T(0.1) * y[3];"
   echo "  }"
   echo "};"
-  for m in $methods; do
-    echo "extern \"C\" __attribute__((noinline, used)) odestep::status audit_step_$m(state& y, AUDIT_T t, AUDIT_T dt) {"
-    echo "  return odestep::explicit_rk<odestep::tables::$m, state>{}.step(two_masses{}, y, t, dt);"
-    echo "}"
-  done
+  step_wrappers "state& y, AUDIT_T t, AUDIT_T dt" "odestep::explicit_rk<odestep::tables::@, state>{}.step(two_masses{}, y, t, dt)" $methods
   cat <<'HAND'
 extern "C" __attribute__((noinline, used)) odestep::status audit_step_hand_rk4(state& y, AUDIT_T t, AUDIT_T dt) {
   two_masses f;
@@ -230,11 +237,7 @@ stiff_steppers=(backward_euler trapezoid sdirk3 radau_iia5 rodas3)
 stiff_unit=$out/stiff_unit.cpp
 {
   sed -n '1,/^};/p' "$unit"
-  for m in "${stiff_steppers[@]}"; do
-    echo "extern \"C\" __attribute__((noinline, used)) odestep::status audit_step_$m(state& y, AUDIT_T t, AUDIT_T dt) {"
-    echo "  return odestep::$m<state>{}.step(two_masses{}, y, t, dt);"
-    echo "}"
-  done
+  step_wrappers "state& y, AUDIT_T t, AUDIT_T dt" "odestep::@<state>{}.step(two_masses{}, y, t, dt)" "${stiff_steppers[@]}"
   cat <<'TRANSITION'
 // RK4 with its state-transition matrix Phi (sensitivity/transition.hpp), the springs' Jacobian by hand.
 struct two_masses_jacobian {
@@ -256,11 +259,7 @@ substeps_steppers=(radau5_substeps rodas4_substeps)
 substeps_unit=$out/substeps_unit.cpp
 {
   sed -n '1,/^};/p' "$unit"
-  for m in "${substeps_steppers[@]}"; do
-    echo "extern \"C\" __attribute__((noinline, used)) odestep::status audit_step_$m(odestep::$m<state>& s, state& y, AUDIT_T t, AUDIT_T dt) {"
-    echo "  return s.step(two_masses{}, y, t, dt);"
-    echo "}"
-  done
+  step_wrappers "odestep::@<state>& s, state& y, AUDIT_T t, AUDIT_T dt" "s.step(two_masses{}, y, t, dt)" "${substeps_steppers[@]}"
 } > "$substeps_unit"
 # The Newtonian steppers: one step() per splitting (symplectic.hpp, aliases of one table once) and per
 # stepper of newtonian.hpp, each on a stepper object kept by the caller between steps (the history-keeping
@@ -282,20 +281,12 @@ newton_unit=$out/newton_unit.cpp
   echo "struct springs {  // x1'' = -2 x1 + x2, x2'' = x1 - 2 x2: two masses, three springs, undamped"
   echo "  vec2 operator()(AUDIT_T, const vec2& x) const noexcept { return {AUDIT_T(-2) * x[0] + x[1], x[0] - AUDIT_T(2) * x[1]}; }"
   echo "};"
-  for m in $splittings $newtonians; do
-    echo "extern \"C\" __attribute__((noinline, used)) odestep::status audit_step_$m(odestep::$m<vec2>& s, vec2& x, vec2& v, AUDIT_T t, AUDIT_T dt) {"
-    echo "  return s.step(springs{}, x, v, t, dt);"
-    echo "}"
-  done
+  step_wrappers "odestep::@<vec2>& s, vec2& x, vec2& v, AUDIT_T t, AUDIT_T dt" "s.step(springs{}, x, v, t, dt)" $splittings $newtonians
   echo "using vec4 = std::array<AUDIT_T, 4>;"
   echo "struct springs4 {  // the same, y = (x1, x2, v1, v2)"
   echo "  void operator()(AUDIT_T, const vec4& y, vec4& d) const noexcept { d = {y[2], y[3], AUDIT_T(-2) * y[0] + y[1], y[0] - AUDIT_T(2) * y[1]}; }"
   echo "};"
-  for m in $multisteps; do
-    echo "extern \"C\" __attribute__((noinline, used)) odestep::status audit_step_$m(odestep::$m<vec4>& s, vec4& y, AUDIT_T t, AUDIT_T dt) {"
-    echo "  return s.step(springs4{}, y, t, dt);"
-    echo "}"
-  done
+  step_wrappers "odestep::@<vec4>& s, vec4& y, AUDIT_T t, AUDIT_T dt" "s.step(springs4{}, y, t, dt)" $multisteps
   cat <<'KEPT'
 extern "C" __attribute__((noinline, used)) odestep::status audit_step_velocity_verlet_caller_kept(vec2& x, vec2& v, vec2& acc, AUDIT_T t, AUDIT_T dt) {
   return odestep::velocity_verlet<vec2>{}.step(springs{}, x, v, acc, t, dt);

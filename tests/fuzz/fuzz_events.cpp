@@ -276,31 +276,37 @@ struct crossing_watch {
     }
 };
 
-// The observer of integrate with events: loop_check, and the event functions' evaluations per grid step.
-template <class T, std::size_t K>
+// The observer of integrate with events: loop_check, and the event functions' evaluations per grid step; a copy
+// of the stepper as it was at the last observation (the twin of a run that fails in the step after it).
+template <class T, std::size_t K, class Stepper>
 struct event_observer {
     loop_check<T, vec2<T>, K, script<T, 2>>* loop;
     g_counter* g;
     std::size_t g_bound;
     crossing_watch<T, K>* crossing;
+    const Stepper* live;
+    Stepper at_last{};
     unsigned actions_then = 0;  // the action calls up to the last observation
     template <class... S>
     void operator()(T t, const S&... s) {
         ODESTEP_FUZZ_CHECK(loop->observed == 0 || g->since <= g_bound,
                            "a step evaluated the event functions more often than max_g_evals_per_step");
         g->since = 0;
+        at_last = *live;
         actions_then = g->actions;
         crossing->see(t, g->actions, s...);
         (*loop)(t, s...);
     }
 };
 
-// The integrate twin: a stepper after a failed run and its copy from before the run each run the same clean
-// program (the clean right-hand side, pure event functions, the grid 0, 1/8, ..., 1 from a finite state); the
-// results and states must agree bit for bit. The counters are put back afterwards.
+// The integrate twin: a stepper after a failed run, and its twin (its copy from before a refused run, or from
+// the last observation of a run whose next step failed and left that observation's state), each run the same
+// clean program (the clean right-hand side, pure event functions, four steps of dt from t_start on from the same
+// finite state; a multistep history then goes on from where the twin's left off); the results and states must
+// agree bit for bit. The counters are put back afterwards.
 template <class T, class Stepper, std::size_t K, class Set>
 void integrate_twins(const Stepper& after, const Stepper& before, const Set& set, const script<T, 2>& f, g_counter& g,
-                     const std::array<vec2<T>, K>& y0) {
+                     const std::array<vec2<T>, K>& y0, T t_start, T dt) {
     const g_counter saved = g;
     g.pure = true;
     g.max_firings = 0;  // (two loops' firings on one counter: the rules are checked in the run itself)
@@ -313,10 +319,11 @@ void integrate_twins(const Stepper& after, const Stepper& before, const Set& set
         Set events = set;
         script<T, 2> c = clean(f);
         system_of<T> sys{&c};
+        const T t_end = t_start + T(4) * dt;
         if constexpr (K == 1) {
-            return odestep::integrate(stepper, sys, y[0], T(0), T(1), T(0.125), events);
+            return odestep::integrate(stepper, sys, y[0], t_start, t_end, dt, events);
         } else {
-            return odestep::integrate(stepper, sys, y[0], y[1], T(0), T(1), T(0.125), events);
+            return odestep::integrate(stepper, sys, y[0], y[1], t_start, t_end, dt, events);
         }
     };
     std::array<vec2<T>, K> ya = start;
@@ -345,7 +352,7 @@ void run_integrate(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_co
     loop_check<T, v2, K, script<T, 2>> check{&f, bound, t0, dt, t1, true, y};
     crossing_watch<T, K> crossing;
     crossing.arm(std::get<0>(set.events));
-    event_observer<T, K> observe{&check, &g, g_bound, &crossing};
+    event_observer<T, K, Stepper> observe{&check, &g, g_bound, &crossing, &stepper};
     system_of<T> sys{&f};
     const Stepper twin = stepper;
     const Set twin_set = set;
@@ -365,8 +372,10 @@ void run_integrate(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_co
     ODESTEP_FUZZ_CHECK(fired == r.fired, "the firings per event do not add up to the firings");
     ODESTEP_FUZZ_CHECK(within_max_firings(set, [&](std::size_t i) { return r.firings[i]; }),
                        "an event fired more often than its max_firings");
-    if (r.status != odestep::status::ok && check.observed > 0 && r.t == check.last_t && r.fired == 0 &&
-        g.actions == observe.actions_then && set.limits.probes == 0 && g.since <= E)  // as in run_ticks
+    const bool quiet_failure = r.status != odestep::status::ok && check.observed > 0 && r.t == check.last_t &&
+                               r.fired == 0 && g.actions == observe.actions_then && set.limits.probes == 0 &&
+                               g.since <= E;  // as in run_ticks
+    if (quiet_failure)
         for (std::size_t k = 0; k < K; ++k)
             ODESTEP_FUZZ_CHECK(same_bits(y[k], check.last[k]), "a failed run whose state is not the last one observed");
     // Issue 24: the firings of the event with the callable action (e1) are its calls; a stopped run's state and
@@ -386,7 +395,11 @@ void run_integrate(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_co
         }
     }
     check.finish(r, y, false, 0);
-    if (failure(r.status)) integrate_twins<T>(stepper, twin, twin_set, f, g, y0);
+    if (failure(r.status) && check.observed == 0) {
+        integrate_twins<T>(stepper, twin, twin_set, f, g, y0, T(0), T(0.125));  // refused: as before the call
+    } else if (failure(r.status) && quiet_failure) {
+        integrate_twins<T>(stepper, observe.at_last, twin_set, f, g, y, r.t, dt);  // as at the last observation
+    }
 }
 
 // The tick twin: a loop after a failed call (tick or rearm) that left the state as it was, and its copy from

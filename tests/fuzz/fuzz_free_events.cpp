@@ -11,10 +11,12 @@
 // finite, monotone, inside [t0, t1] (integrate_adaptive: (t0, y0) first, before any evaluation); an ok run ends
 // on t1 bit for bit with the last observed state, finite; f not called after it gave NaN or Inf (the explicit
 // pairs); a stopped run's y and r.t are its last observation; the firings per event add up, and the callable
-// event's firings are its action's calls, at most its max_firings, at least its dead time apart; every action runs at a time inside the step after the last
-// observation; the missed-crossing property on the accepted steps (integrate_adaptive observes every step's
-// end): when the callable event's g has opposite strict signs, in its direction, at two consecutive
-// observations, its action ran between them (pure g, default settings, after the first step, as in fuzz_events).
+// event's firings are its action's calls, at most its max_firings, at least its dead time apart; every action
+// runs at a time inside the step after the last observation; the missed-crossing property on the accepted
+// steps (integrate_adaptive observes every step's end): when the callable event's g has opposite strict signs,
+// in its direction, at two consecutive observations, its action ran between them (pure g, default settings,
+// after the first step, as in fuzz_events; not over an interval that starts at an action's event, which may
+// carry the rest of the fired crossing).
 #include <odestep/adaptive.hpp>
 #include <odestep/odestep.hpp>
 
@@ -184,6 +186,8 @@ struct observer {
     odestep::direction dir = odestep::direction::either;
     T g_last = T(0);
     unsigned actions_last = 0;
+    bool fired_seen = false;  // an action ran, and fired_t is the time of the observation of its state
+    T fired_t = T(0);
 
     bool along(T a, T b) const { return t1 < t0 ? a >= b : a <= b; }
 
@@ -200,13 +204,22 @@ struct observer {
         ODESTEP_FUZZ_CHECK(finite(y) || (t == t0 && same_bits(y, initial)), "an observed state not finite");
         if (watch && times == nullptr) {
             const T now = g(t, y);
+            // A crossing located to adjacent times of T may be fired at the left one, before g changes sign:
+            // the interval that starts at the event's time (its observations) carries that crossing's rest, so
+            // it is not checked (found in float at t = 10, where g fell by 1.2 in one ULP, and in double with g
+            // at -1e-16 at the event). The intervals after it are.
+            const bool from_event = observed >= 1 && fired_seen && last_t == fired_t;
             const bool falls = g_last > T(0) && now < T(0);
             const bool rises = g_last < T(0) && now > T(0);
             const bool crossed = dir == odestep::direction::falling  ? falls
                                  : dir == odestep::direction::rising ? rises
                                                                      : falls || rises;
-            ODESTEP_FUZZ_CHECK(!(observed >= 2 && crossed) || count->actions != actions_last,
+            ODESTEP_FUZZ_CHECK(!(observed >= 2 && crossed && !from_event) || count->actions != actions_last,
                                "g crossed between two observations and its event did not fire");
+            if (count->actions != actions_last) {  // this observation is the state an action left, at its time
+                fired_seen = true;
+                fired_t = t;
+            }
             g_last = now;
             actions_last = count->actions;
         }
