@@ -195,7 +195,7 @@ struct rk_tangent_listener {
                 return;
             }
         }
-        block z{};  // every entry is written below; {} because GCC -O2 cannot see that reads[i] implies a nonzero a_ij
+        block z;
         if constexpr (Identity) {
             // Z_i = I + dt sum_j a_ij K_j: the first term written, not added to a zeroed identity.
             const std::size_t first = first_read[i];
