@@ -325,6 +325,8 @@ without_section() {
 large_section() { section "$large_heading" "$1"; }
 # Written by hand from the modes' tables (every issue 27 ratio against its target): kept by every mode.
 issue27_heading='## Issue 27: every ratio against its target'
+# Written by hand from tests/sensitivity/transition_cost.cpp and bench/m4f/sensitivity.sh: kept by every mode.
+phi_heading='## Steps with Phi (issue 29)'
 if ((large)); then
   start=$SECONDS
   dir=$(mktemp -d "${TMPDIR:-/tmp}/odestep-bench.XXXXXX")
@@ -762,6 +764,7 @@ kept_wp=$(wp_section "$root/bench/RESULTS.md")
 kept_swp=$(swp_section "$root/bench/RESULTS.md")
 kept_large=$(large_section "$root/bench/RESULTS.md")
 kept_issue27=$(section "$issue27_heading" "$root/bench/RESULTS.md")
+kept_phi=$(section "$phi_heading" "$root/bench/RESULTS.md")
 
 {
   cat << EOF
@@ -980,6 +983,7 @@ EOF
   # Nor the issue 27 summary (written by hand) and the large-state section (scripts/bench.sh --large).
   [ -z "$kept_issue27" ] || printf '\n%s\n' "$kept_issue27"
   [ -z "$kept_large" ] || printf '\n%s\n' "$kept_large"
+  [ -z "$kept_phi" ] || printf '\n%s\n' "$kept_phi"
 } > "$root/bench/RESULTS.md"
 
 echo
