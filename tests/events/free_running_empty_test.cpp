@@ -71,3 +71,32 @@ TEST_CASE("free-running loops with events: an empty run from -0.0 to +0.0 ends o
         CHECK(same_bits(r.t, 0.0f));
     }
 }
+
+// The same rule without events (the plain free-running loop and integrate_times, adaptive/integrate_adaptive.hpp):
+// they too ended ok on -0.0 (fuzz_free_events' report; the same one-line fix).
+TEST_CASE("free-running loops without events: an empty run from -0.0 to +0.0 ends on +0.0 bit for bit") {
+    {
+        odestep::adaptive_rk<odestep::tables::dormand_prince54, state> dp5;
+        state y{1.0, 2.0};
+        const auto r = odestep::integrate_adaptive(dp5, decay<double>{}, y, -0.0, 0.0);
+        REQUIRE(r.status == odestep::status::ok);
+        CHECK(same_bits(r.t, 0.0));
+        CHECK(r.steps == 0);
+        CHECK((y == state{1.0, 2.0}));
+    }
+    {
+        odestep::radau5<state> radau;
+        state y{1.0, 2.0};
+        const auto r = odestep::integrate_adaptive(radau, decay<double>{}, y, -0.0, 0.0);
+        REQUIRE(r.status == odestep::status::ok);
+        CHECK(same_bits(r.t, 0.0));
+    }
+    {
+        odestep::adaptive_rk<odestep::tables::dormand_prince54, state> dp5;
+        state y{1.0, 2.0};
+        const std::array<double, 1> times{0.0};
+        const auto r = odestep::integrate_times(dp5, decay<double>{}, y, -0.0, times, [](double, const state&) {});
+        REQUIRE(r.status == odestep::status::ok);
+        CHECK(same_bits(r.t, 0.0));
+    }
+}

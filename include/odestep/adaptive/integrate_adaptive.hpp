@@ -60,7 +60,7 @@ integrate_result<value_type_t<State>> free_running(Engine& engine, System& f, St
         }
     }
     if (t != t1) return done(status::substep_limit, t, accepted);
-    return done(status::ok, t, accepted);
+    return done(status::ok, t1, accepted);  // t1 itself: a run from -0.0 to +0.0 ends on +0.0
 }
 
 // What integrate_times checks before anything is evaluated (the same for every engine): the run's preflight
@@ -129,7 +129,7 @@ integrate_result<value_type_t<State>> sampled_run(Engine& engine, System& f, Sta
         while (next < count && times[next] == t) observe(times[next++], static_cast<const State&>(y));
     }
     if (next < count) return done(status::substep_limit, t, accepted);
-    return done(status::ok, t, accepted);
+    return done(status::ok, t1, accepted);  // the last time itself (-0.0 against +0.0)
 }
 }  // namespace detail
 
