@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 namespace {
 
@@ -278,4 +279,25 @@ TEST_CASE("event_stepper: a change of the probes takes effect at rearm, and the 
             CHECK(std::abs(r.firings[1].t - 1.7) <= 1e-14);
         }
     }
+}
+
+TEST_CASE("events on the interpolant: located_on_interpolant() picks the mode apart from the finder") {
+    const auto ground = odestep::make_event<state2>(height, odestep::direction::falling);
+    // The type: the same set as the finder-slot spelling, for the default finder and for ITP; idempotent.
+    using brent_set = decltype(odestep::watch<interpolant>(ground));
+    using itp_set = decltype(odestep::watch<odestep::on_interpolant<odestep::itp>>(ground));
+    static_assert(std::is_same_v<decltype(odestep::watch(ground).located_on_interpolant()), brent_set>);
+    static_assert(std::is_same_v<decltype(odestep::watch<odestep::itp>(ground).located_on_interpolant()), itp_set>);
+    static_assert(std::is_same_v<decltype(odestep::watch<interpolant>(ground).located_on_interpolant()), brent_set>);
+    // The limits carry over, and the run is the on_interpolant run (free fall: the closed form's time).
+    odestep::event_limits limits;
+    limits.max_firings_per_step = 3;
+    const auto set = odestep::watch<odestep::itp>(ground).with_limits(limits).located_on_interpolant();
+    CHECK(set.limits.max_firings_per_step == 3);
+    const double h = 10.0;
+    const double t_hit = std::sqrt(2.0 * h / gravity);
+    state2 s{h, 0.0};
+    const auto r = odestep::integrate(odestep::rk4<state2>{}, free_fall{}, s, 0.0, 10.0, 0.1, set);
+    REQUIRE(r.status == odestep::status::stopped_by_event);
+    CHECK(std::abs(r.t - t_hit) <= 64 * eps * t_hit);
 }

@@ -158,6 +158,17 @@ struct locates_on_interpolant<Finder, std::void_t<decltype(Finder::locates_on_in
     : std::bool_constant<Finder::locates_on_interpolant> {};
 template <class Finder>
 inline constexpr bool locates_on_interpolant_v = locates_on_interpolant<Finder>::value;
+// The bracketing finder inside a location policy: Finder itself, or F of on_interpolant<F>.
+template <class Finder, bool = locates_on_interpolant_v<Finder>>
+struct bracketing_finder {
+    using type = Finder;
+};
+template <class Finder>
+struct bracketing_finder<Finder, true> {
+    using type = typename Finder::root_finder;
+};
+template <class Finder>
+using bracketing_finder_t = typename bracketing_finder<Finder>::type;
 }  // namespace detail
 
 /// The events of one run, given together (each its own type: no type erasure, no heap), the loop's limits
@@ -177,6 +188,13 @@ struct event_set {
         event_set s = *this;
         s.limits = l;
         return s;
+    }
+    /// A copy located on the step's interpolant (odestep::on_interpolant) with the same root finder: the
+    /// location mode chosen apart from the finder, `watch<odestep::itp>(g).located_on_interpolant()` being
+    /// `watch<odestep::on_interpolant<odestep::itp>>(g)`. Already on the interpolant: the same set.
+    constexpr auto located_on_interpolant() const {
+        using located = event_set<on_interpolant<detail::bracketing_finder_t<Finder>>, Events...>;
+        return located{events, limits};
     }
 };
 
