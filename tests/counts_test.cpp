@@ -440,6 +440,23 @@ TEST_CASE("counts: the stiff engines report f, J, factorizations and Newton iter
         CHECK(r.counts.newton_iterations == engine.newton_iterations());
         CHECK(r.counts.newton_iterations >= r.counts.accepted_steps);  // at least one per accepted step
     }
+    SUBCASE("SDIRK4 with its own Jacobian (its factorizations were reported as 0)") {
+        step_count f_calls = 0;
+        step_count j_calls = 0;
+        auto sys = odestep::with_jacobian(count_calls(stiff_f, &f_calls), count_calls(stiff_j, &j_calls));
+        odestep::sdirk_adaptive<odestep::tables::sdirk4, S2> engine(odestep::tolerances<S2>::uniform(1e-6, 1e-6));
+        S2 y{1.0, 1.0};
+        const auto r = odestep::integrate_adaptive(engine, sys, y, 0.0, 5.0, observe);
+        REQUIRE(r.status == odestep::status::ok);
+        CHECK(r.counts.rhs_evals == f_calls);
+        CHECK(r.counts.jacobian_evals == j_calls);
+        CHECK(r.counts.accepted_steps == observed - 1);
+        CHECK(r.counts.factorizations == engine.decompositions());
+        CHECK(r.counts.factorizations >= j_calls);  // every new Jacobian is factorized
+        CHECK(r.counts.newton_iterations == engine.newton_iterations());
+        CHECK(r.counts.newton_iterations <= f_calls);  // each iteration one evaluation of f
+        CHECK(r.counts.newton_iterations >= r.counts.accepted_steps);
+    }
     SUBCASE("Rodas4 with its own Jacobian: one Jacobian and one factorization per step tried") {
         step_count f_calls = 0;
         step_count j_calls = 0;

@@ -144,6 +144,8 @@ public:
     step_count jacobian_evaluations() const noexcept { return jacobians_; }
     /// LU factorizations of E since construction.
     step_count decompositions() const noexcept { return decompositions_; }
+    /// LU factorizations since construction, as odestep::counts reports them (one per decomposition of E).
+    step_count factorizations() const noexcept { return decompositions_; }
     /// Newton iterations since construction (each: one evaluation of f, one solve).
     step_count newton_iterations() const noexcept { return iterations_; }
 
