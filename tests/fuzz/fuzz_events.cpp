@@ -402,10 +402,11 @@ void run_integrate(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_co
     }
 }
 
-// adaptive_substeps and the stiff substep forms keep their engine's memory (the shrunk step size, the first stage
-// f gave at the interval's start) after a failed interval, as adaptive/adaptive_rk.hpp documents: a later call
-// with an f that changed (the harness's clean f) is not its twin's. Their failed calls are checked for the state
-// only; the twin property for them is open (issue 24's note; tests/fuzz/known/fuzz_events keeps the input).
+// adaptive_substeps and the stiff substep forms keep their engine's memory (the adapted step size, the first
+// stage f gave at the interval's start) and its counts after a failed call, by design (docs/events.md, "A failed
+// call and the stepper's memory"): a later call is a valid one to the same tolerances, not its twin's. Their failed
+// calls are checked for the state only. Every other stepper's memory (a multistep history, a kept acceleration)
+// is put back by the event engine when a failed step is rolled back to its start.
 template <class S, class = void>
 struct keeps_memory_on_failure : std::false_type {};
 template <class S>
@@ -418,10 +419,6 @@ template <class T, class Loop, std::size_t K>
 void tick_twins(const Loop& after, const Loop& before, const script<T, 2>& f, g_counter& g,
                 const std::array<vec2<T>, K>& y) {
     constexpr std::size_t E = Loop::set_type::size;
-    // Open finding (tests/fuzz/known/fuzz_events/tick-twin-non-finite-event): after a tick that failed with
-    // non_finite_event the loop went on with non_finite where its copy from before the tick gave
-    // non_finite_event again.
-    if (skip_open_findings()) return;
     const g_counter saved = g;
     g.pure = true;
     g.max_firings = 0;  // (two loops' firings on one counter: the rules are checked in the run itself)

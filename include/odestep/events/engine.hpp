@@ -70,6 +70,27 @@ constexpr event_result call_action(Action& action, T t, direction crossed, const
         }
     }
 }
+// What a step changes in a stepper besides the state: nothing, or, for a stepper with a history or a kept value
+// (has_reset: Adams, Beeman, the first-same-as-last Newtonian methods), that memory. A copy is kept from before
+// the step, so that a step the engine rolls back to its start (a failure seen after the stepper stepped:
+// g not finite at the step's end, at a probe or in a location) leaves the stepper as it was, and the next call
+// goes on as if the failed one had not happened. A stepper without memory keeps nothing and pays nothing.
+template <class Stepper, bool = has_reset<Stepper>::value>
+class stepper_memory {
+public:
+    ODESTEP_INLINE explicit stepper_memory(const Stepper& s) : kept_(s) {}
+    void restore(Stepper& s) const { s = kept_; }
+
+private:
+    Stepper kept_;
+};
+template <class Stepper>
+class stepper_memory<Stepper, false> {
+public:
+    ODESTEP_INLINE explicit constexpr stepper_memory(const Stepper&) noexcept {}
+    constexpr void restore(Stepper&) const noexcept {}
+};
+
 // The event loop's state and its one step with events; integrate with events and event_stepper both use it.
 // K is the number of state objects (1: y; 2: x and v).
 template <class State, std::size_t K, class Set>
@@ -127,6 +148,7 @@ public:
     template <class Stepper, class System, class Sink>
     step_outcome<T> advance(Stepper& stepper, System& f, set_type& set, refs y, T t_s, T h, T t_end, Sink sink) {
         pack start;
+        const stepper_memory<Stepper> before(stepper);
         const status s = step(stepper, f, y, t_s, h, start);
         if (ODESTEP_UNLIKELY(s != status::ok)) {
             ++work.failed_steps;
@@ -134,7 +156,7 @@ public:
         }
         values g;
         if (ODESTEP_UNLIKELY(!settle(set, y, t_end, g)))
-            return advance_rest(stepper, f, set, y, start, g, t_s, h, t_end, sink);
+            return advance_rest(stepper, before, f, set, y, start, g, t_s, h, t_end, sink);
         return {status::ok, t_end, 0, no_event};
     }
 
@@ -172,15 +194,25 @@ public:
         return true;
     }
 
-    // The rest of advance, after settle returned false (start and g as step and settle left them): every
-    // crossing inside the step located, fired and acted on; after a callable action, the rest of the step
-    // again from the event. Any outcome but ok leaves y somewhere other than the regular step's end: the
-    // stepper is reset then (its history, or a kept acceleration, belongs to that step).
+    // The rest of advance, after settle returned false (start, g and before as step and settle left them):
+    // every crossing inside the step located, fired and acted on; after a callable action, the rest of the step
+    // again from the event. Any outcome but ok leaves y somewhere other than the regular step's end. Rolled
+    // back to the step's start (nothing committed, no action run), the stepper gets its memory from before the
+    // step back (before): it fits y there. Anywhere else the stepper is reset (its history, or a kept
+    // acceleration, belongs to another state).
     template <class Stepper, class System, class Sink>
-    ODESTEP_EVENTS_NOINLINE step_outcome<T> advance_rest(Stepper& stepper, System& f, set_type& set, refs y,
-                                                         pack& start, values g_end, T t_s, T h, T t_end, Sink sink) {
-        const step_outcome<T> o = scan(stepper, f, set, y, start, g_end, t_s, h, t_end, sink);
-        if (o.code != status::ok) reset_if_any(stepper);
+    ODESTEP_EVENTS_NOINLINE step_outcome<T> advance_rest(Stepper& stepper, const stepper_memory<Stepper>& before,
+                                                         System& f, set_type& set, refs y, pack& start, values g_end,
+                                                         T t_s, T h, T t_end, Sink sink) {
+        bool at_start = false;
+        const step_outcome<T> o = scan(stepper, f, set, y, start, g_end, t_s, h, t_end, sink, at_start);
+        if (o.code != status::ok) {
+            if (at_start) {
+                before.restore(stepper);
+            } else {
+                reset_if_any(stepper);
+            }
+        }
         return o;
     }
 
@@ -217,6 +249,7 @@ private:
         std::size_t located = 0;  // locations in this step, firing or not: at most max_firings_per_step
         bool partial = false;     // the pass began at an event
         bool acted = false;       // a callable action ran in this step
+        bool moved = false;       // the events' memory was committed past the step's start (lo moved)
         // The step's outcome, once a phase ends it (with fired_here and acted).
         status code = status::ok;
         T t_out = T(0);
@@ -245,9 +278,11 @@ private:
     enum class after_location : unsigned char { scan_on, restart, end };
 
     // The scan: one pass per restart (the first, and one after each location whose action ran).
+    // at_start: the step ended with y its own start, at t_s, the events' memory as before it (nothing
+    // committed, nothing fired).
     template <class Stepper, class System, class Sink>
     step_outcome<T> scan(Stepper& stepper, System& f, set_type& set, refs y, pack& start, values g_end, T t_s, T h,
-                         T t_end, Sink& sink) {
+                         T t_end, Sink& sink, bool& at_start) {
         scan_state c(y, start, t_s, h, t_end);
         while (pass(stepper, f, set, c, g_end, sink)) {
             if (c.h == T(0)) {  // the event was at the step's end
@@ -258,6 +293,7 @@ private:
         }
         step_outcome<T> o{c.code, c.t_out, c.fired_here, c.event};
         o.acted = c.acted;
+        at_start = !c.partial && !c.moved && c.fired_here == 0 && !c.acted && c.t_out == t_s;
         return o;
     }
 
@@ -301,6 +337,7 @@ private:
             }
             if (!(lo == hi)) {  // (a location that ended at hi left the memory with the values read there)
                 lo = hi;
+                c.moved = true;
                 load(hi_refs, c.lo_state);
                 commit(set, c.at(hi), g_hi);
             }
@@ -369,6 +406,7 @@ private:
         // No action ran (record events only, or nothing fired): the step's own result stands; the scan goes
         // on from b.
         lo = b;
+        c.moved = true;
         c.lo_state = c.b_state;
         commit(set, t_b, g_b);
         return after_location::scan_on;

@@ -189,6 +189,7 @@ private:
     using T = value_type;
     using engine_type = detail::event_engine<state_type, arity, Set>;
     using ptrs_type = std::array<state_type*, arity>;
+    using memory_type = detail::stepper_memory<Stepper>;  // the stepper's memory from before a step
 
     // The quiet tick with every call in it inlined (the step, f, every g), as the loop written out by hand:
     // GCC at -O2 otherwise calls the step out of line, and the values around the call cost the tick a frame
@@ -211,6 +212,7 @@ private:
         // them: a step and events that do not read t, and a caller who does not read r.t, convert nothing).
         const T t_s = clock_.time(n_);
         typename engine_type::pack start;
+        const memory_type before(stepper_);  // (a stepper without memory keeps nothing here)
         r.status = engine_type::step(stepper_, f, ptrs, t_s, clock_.dt, start);
         if (ODESTEP_UNLIKELY(r.status != status::ok)) {
             ++work_.quiet_failed;
@@ -219,7 +221,7 @@ private:
         }
         const T t_end = grid_time();  // finite: an unbounded clock never takes this path (see start)
         typename engine_type::values g;
-        if (ODESTEP_UNLIKELY(!engine_.settle_armed(set_, ptrs, t_end, g))) return rest(f, ptrs, start, g);
+        if (ODESTEP_UNLIKELY(!engine_.settle_armed(set_, ptrs, t_end, g))) return rest(f, ptrs, start, before, g);
         ++n_;
         r.t = t_end;
         return r;
@@ -241,7 +243,7 @@ private:
     // (ptrs, the state before the step and g by value: the quiet tick then keeps them in registers where
     // they fit and builds the arguments on this path only, instead of copying the state to its frame.)
     ODESTEP_EVENTS_NOINLINE tick_result<T, Capacity> rest(System& f, const ptrs_type ptrs,
-                                                          typename engine_type::pack start,
+                                                          typename engine_type::pack start, const memory_type& before,
                                                           const typename engine_type::values g) {
         ++work_.rested;
         const T t_end = grid_time();  // (converted again here: the quiet tick keeps nothing for this path)
@@ -251,7 +253,7 @@ private:
         r.fired = 0;
         r.event = no_event;
         const std::uint64_t target = n_ + 1;
-        finish_piece(f, ptrs, start, g, time(), clock_.dt, t_end, r);
+        finish_piece(f, ptrs, start, before, g, time(), clock_.dt, t_end, r);
         account(r, target);
         return r;
     }
@@ -287,6 +289,7 @@ private:
             }
             const bool partial = off_grid_;
             typename engine_type::pack start;
+            const memory_type before(stepper_);
             const status s = engine_type::step(stepper_, f, ptrs, time(), h, start);
             ++work_.off_steps;
             if (s != status::ok) {
@@ -301,7 +304,7 @@ private:
                 t_now_ = t_end;
                 off_grid_ = false;
             } else {
-                finish_piece(f, ptrs, start, g, time(), h, t_end, r);
+                finish_piece(f, ptrs, start, before, g, time(), h, t_end, r);
             }
             // A partial step (from where a tick stopped back to the grid) does not fit a multistep history.
             if (partial) detail::reset_if_any(stepper_);
@@ -315,14 +318,14 @@ private:
     // r's list, and the clock moved to where the piece ended.
     template <class System>
     ODESTEP_INLINE void finish_piece(System& f, const ptrs_type& ptrs, typename engine_type::pack& start,
-                                     const typename engine_type::values& g, T t_start, T h, T t_end,
-                                     tick_result<T, Capacity>& r) {
+                                     const memory_type& before, const typename engine_type::values& g, T t_start, T h,
+                                     T t_end, tick_result<T, Capacity>& r) {
         const std::size_t offset = r.fired;
         auto sink = [&r, offset](std::size_t k, std::size_t i, T t) {
             if (offset + k < Capacity) r.firings[offset + k] = event_firing<T>{i, t};
         };
         const detail::step_outcome<T> a =
-            engine_.advance_rest(stepper_, f, set_, ptrs, start, g, t_start, h, t_end, sink);
+            engine_.advance_rest(stepper_, before, f, set_, ptrs, start, g, t_start, h, t_end, sink);
         r.status = a.code;
         r.fired += a.fired;
         r.event = a.event;
