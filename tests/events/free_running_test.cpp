@@ -713,3 +713,38 @@ TEST_CASE("free-running events: the replaying stepper reads the step, and refuse
     CHECK(own.step(f, u, 0.125, 0.125) != odestep::status::ok);  // the engine's stepper, a second time
     CHECK(replayed.restart);
 }
+
+TEST_CASE("free-running events: a record and a terminal event at one time: the stop hands back the state observed") {
+    // y0' = 10 + 10 t, y0(0) = 0: y0 = 5 t (t + 2), zero at t = -2 (BS 3(2)'s steps and its Hermite extension are
+    // exact for this quadratic but for rounding); y1' = 10 (y0 + y1 + 1 + t) only makes the steps short. The
+    // record and the terminal event watch the same g = y0, so both fire at one location: the record's
+    // observation is the event's state, and the stop hands back that same state (fuzz_free_events'
+    // stopped-two-events-same-time: the record was read from the extension at t - t_s, the stop at the
+    // location's own offset, which rounds to the same t; the two states differed in the last bits).
+    auto f = [](double t, const state2& y) { return state2{10.0 + 10.0 * t, 10.0 * (y[0] + y[1] + 1.0 + t)}; };
+    auto g = [](double, const state2& y) { return y[0]; };
+    auto seen_at = odestep::make_event<state2>(g, odestep::direction::either, odestep::record);
+    auto stop_at = odestep::make_event<state2>(g, odestep::direction::either, odestep::terminal);
+    odestep::adaptive_rk<odestep::tables::bogacki_shampine32, state2> engine(
+        odestep::tolerances<state2>::uniform(10.0, 10.0));
+    state2 y{0.0, 0.0};
+    double last_t = 0.0;
+    state2 last{};
+    std::size_t observed = 0;
+    const auto r = odestep::integrate_adaptive(engine, f, y, 0.0, -9.375, odestep::watch(seen_at, stop_at),
+                                               [&](double t, const state2& s) {
+                                                   last_t = t;
+                                                   last = s;
+                                                   ++observed;
+                                               });
+    CHECK(r.status == odestep::status::stopped_by_event);
+    CHECK(r.event == 1);
+    CHECK(r.firings[0] == 1);
+    // the root of 5 t (t + 2): -2, to the rounding of the steps (terms of size 20: a few ULPs of 20, over |y0'| = 10)
+    CHECK(std::abs(r.t + 2.0) <= 64.0 * std::numeric_limits<double>::epsilon());
+    CHECK(std::abs(y[0]) <= 64.0 * std::numeric_limits<double>::epsilon() * 20.0);
+    CHECK(observed >= 2);
+    CHECK(last_t == r.t);
+    CHECK(last[0] == y[0]);
+    CHECK(last[1] == y[1]);
+}

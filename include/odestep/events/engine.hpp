@@ -144,7 +144,8 @@ public:
 
     // One step of h from (t_s, y) to t_end (t_end = t_s + h, with t_end from the caller's counter), with
     // every event it contains located, fired and acted on; the result's t is the time of y. sink(k, i, t) is
-    // told the k-th firing inside the step (k from 0): event i at t.
+    // told the k-th firing inside the step (k from 0): event i at t; sink(k, i, t, y), if it takes it, also the
+    // event's state there (before the event's own action).
     template <class Stepper, class System, class Sink>
     step_outcome<T> advance(Stepper& stepper, System& f, set_type& set, refs y, T t_s, T h, T t_end, Sink sink) {
         pack start;
@@ -629,7 +630,11 @@ private:
             m.last = t_star;
             m.until = t_b;
             m.through = true;  // (set_headings decides after an action)
-            sink(fired_here, i, t_star);
+            if constexpr (std::is_invocable_v<Sink&, std::size_t, std::size_t, T, const refs&>) {
+                sink(fired_here, i, t_star, y_star);  // (the free-running loops observe a record at its state)
+            } else {
+                sink(fired_here, i, t_star);
+            }
             fired_here += 1;
             // The direction the crossing went: from below zero, rising; from above, falling.
             const direction crossed = m.g < T(0) ? direction::rising : direction::falling;

@@ -331,8 +331,8 @@ struct record_flags<event_set<Finder, Events...>> {
         std::is_same_v<std::remove_cv_t<decltype(Events::action)>, record_action>...};
 };
 
-// What integrate_adaptive with events observes: the start, each record firing (the state there, from the
-// extension), every completed step's end (a step cut at an action's event ends there, with the state the
+// What integrate_adaptive with events observes: the start, each record firing (the event's state, as the
+// location found it), every completed step's end (a step cut at an action's event ends there, with the state the
 // action left), and the state where the run stopped unless it was the last one observed.
 template <class Observer, class State>
 struct step_output {
@@ -346,14 +346,8 @@ struct step_output {
     }
     void start(T t0, const State& y) { see(t0, y); }
     template <class Replayed>
-    void record(T t, Replayed& r) {
-        State u;
-        const status s = r.state_at(t, u);
-        if (s != status::ok) {
-            failure = s;
-            return;
-        }
-        see(t, u);
+    void record(T t, const State& y_event, Replayed&) {
+        see(t, y_event);
     }
     template <class Replayed>
     void step_end(T t, const State& y, Replayed&) {
@@ -397,11 +391,9 @@ struct times_output {
         }
     }
     template <class Replayed>
-    void record(T t, Replayed& r) {
+    void record(T t, const State& y_event, Replayed& r) {
         flush(t, r);
-        State u;
-        if (failure == status::ok) failure = r.state_at(t, u);
-        if (failure == status::ok) see(t, u);
+        if (failure == status::ok) see(t, y_event);
     }
     template <class Replayed>
     void step_end(T t, const State& y, Replayed& r) {
@@ -482,8 +474,10 @@ event_integrate_result<value_type_t<State>, Set::size> free_running_events(Engin
     T window_end = t0;
     std::size_t used = 0;
     constexpr std::array<bool, E> records = record_flags<std::remove_cv_t<Set>>::value;
-    const auto sink = [&](std::size_t, std::size_t i, T t_event) {
-        if (records[i]) out.record(t_event, replayed);
+    // A record firing is observed at the event's own state (the location's, as a stop at the same time hands
+    // back), not read again from the extension at t_event - t_s, which can round to another offset.
+    const auto sink = [&](std::size_t, std::size_t i, T t_event, const std::array<State*, 1>& y_event) {
+        if (records[i]) out.record(t_event, static_cast<const State&>(*y_event[0]), replayed);
     };
     T t = t0;
     step_count steps = 0;
