@@ -283,6 +283,20 @@ constexpr State acceleration(Accel& a, T t, const State& x, const State& v) {
     }
 }
 
+// out = a(t, x, v) (a position-only force ignores v), written straight into out by an in-place force, so
+// that a large state is neither returned by value nor copied. out is not x or v.
+template <class Accel, class State, class T>
+ODESTEP_INLINE constexpr void accelerate(Accel& a, T t, const State& x, const State& v, State& out) {
+    if constexpr (is_inplace_velocity_force_v<Accel, State, T>) {
+        a(t, x, v, out);
+    } else if constexpr (!is_velocity_force_v<Accel, State, T> && is_inplace_position_force_v<Accel, State, T>) {
+        (void)v;
+        a(t, x, out);
+    } else {
+        out = acceleration(a, t, x, v);
+    }
+}
+
 }  // namespace detail
 }  // namespace odestep
 

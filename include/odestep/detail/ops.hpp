@@ -54,6 +54,41 @@ constexpr bool finite_sum(T sum) noexcept {
     return d == d;  // one compare and one branch on unordered; no zero constant
 }
 
+/// total += every component of v, for the finiteness test's sum of a step (finite_sum): in lanes, component
+/// n into lane n % lanes and the lanes added into total at the end, so that the additions of one pass are
+/// independent and vectorize (one serial sum is a chain of dependent additions, which the compiler must
+/// keep in order). 32 bytes of lanes, one AVX register: for float always, for double where AVX is enabled
+/// (x86-64 without it, GCC 12 -O2: the serial double sum is cheaper at N >= 64; docs/performance.md,
+/// "Large states"). Only for states of at least four passes of lanes (double with AVX at N = 8 took an
+/// instruction or three more); a smaller state, or another T, sums serially, component 0 first. The one
+/// lane sum of the library: explicit_rk and the splitting methods use it.
+template <class T, std::size_t N>
+ODESTEP_INLINE void add_in_lanes(T& total, const std::array<T, N>& v) noexcept {
+#if defined(__AVX__)
+    constexpr bool wide_vectors = true;
+#else
+    constexpr bool wide_vectors = false;
+#endif
+    constexpr std::size_t lanes = sizeof(T) == 4 || (sizeof(T) == 8 && wide_vectors) ? 32 / sizeof(T) : 1;
+    if constexpr (N >= 4 * lanes && lanes > 1) {
+        std::array<T, lanes> lane;
+        ODESTEP_STEP_UNROLL_ALWAYS
+        for (std::size_t l = 0; l < lanes; ++l) lane[l] = v[l];
+        constexpr std::size_t whole = N / lanes * lanes;
+        for (std::size_t n = lanes; n < whole; n += lanes) {
+            ODESTEP_STEP_UNROLL_ALWAYS
+            for (std::size_t l = 0; l < lanes; ++l) lane[l] += v[n + l];
+        }
+        ODESTEP_STEP_UNROLL_ALWAYS
+        for (std::size_t n = whole; n < N; ++n) total += v[n];
+        ODESTEP_STEP_UNROLL_ALWAYS
+        for (std::size_t l = 0; l < lanes; ++l) total += lane[l];
+    } else {
+        ODESTEP_STEP_UNROLL_ALWAYS
+        for (std::size_t n = 0; n < N; ++n) total += v[n];
+    }
+}
+
 /// The exact test, component by component. Always inlined: it is the slow path after a failed
 /// finite_sum, and as a call (at -Os) it made every value live across it spill to the stack on the hot
 /// path too.

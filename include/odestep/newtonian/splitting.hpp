@@ -103,7 +103,9 @@ struct splitting_cache<State, true> {
 ///
 /// Check (odestep::checked, the default, or odestep::unchecked): whether the step tests the new x and v for
 /// NaN and Inf (and returns `status::non_finite` with x, v and a kept acceleration untouched) or writes
-/// them as they come. The arithmetic is the same in both.
+/// them as they come: unchecked, a state larger than 32 bytes is updated in x, v and the kept
+/// acceleration themselves, with no local copy (x and v are distinct objects). The arithmetic is the same
+/// in both, bit for bit.
 template <class Method, class State, class Check = checked>
 class splitting : public stepper_defaults<State> {
 public:
@@ -133,6 +135,21 @@ private:
     static constexpr bool ends_with_kick = plan::is_kick(plan::last);
     // The first update is a kick that evaluates the force (not a kept acceleration): see advance.
     static constexpr bool lazy_velocity = plan::is_kick(plan::first) && !fsal;
+    // Unchecked, a large state is updated in place: x, v and the kept acceleration themselves, no locals
+    // and no copies at the end. A small one, which fits in registers (32 bytes: one AVX register, eight of
+    // Cortex-M4F's single-precision registers; and up to 8 components where the build optimizes for size),
+    // is worked in locals as the checked step's is and stored once: in place, every store to x or v, which
+    // may be the same memory for all the compiler knows, makes it reload the other (x86-64 GCC 12 -O2,
+    // velocity Verlet N = 2: 29 instructions a step against 20; Cortex-M4F -Os: 28 bytes more).
+    static constexpr bool in_place =
+        !checks_finiteness && !(sizeof(State) <= 32 || (detail::optimizing_for_size && N <= 8));
+    // The drifts and kicks as loops written in the step (checked: into locals, which alias nothing; and
+    // optimizing for size, where GCC vectorizes nothing and would keep add_scaled a call), or through
+    // add_scaled, which says that x, v and the acceleration are distinct.
+    static constexpr bool plain_loops = !in_place || detail::optimizing_for_size;
+    // A checked step copies v into its local before the first update (see advance): only optimizing for
+    // size, and not with lazy_velocity.
+    static constexpr bool copy_velocity = !in_place && !lazy_velocity && detail::optimizing_for_size;
 
 public:
     /// The order of the global error (trait; see odestep::stepper_defaults).
@@ -180,16 +197,23 @@ public:
     /// entry value. The stepper keeps and checks nothing, so this form has no continuation test: one
     /// evaluation of a per step, always, and the step is const (one stepper serves any number of states).
     /// On status::non_finite x, v and acc are left exactly as they were. acc is an object of its own (not
-    /// x or v). A force of position alone only.
+    /// x or v), which nothing but the step reaches while it runs (the force writes it only through its
+    /// a_out): the step says so to the compiler (ODESTEP_RESTRICT), so that a force written in place
+    /// vectorizes. A force of position alone only.
     template <class Accel, bool F = fsal, std::enable_if_t<F, int> = 0>
-    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(Accel&& a, State& x, State& v, State& acc, T t, T dt) const {
+    ODESTEP_STEP_FLATTEN [[nodiscard]] status step(Accel&& a, State& x, State& v, State& ODESTEP_RESTRICT acc, T t,
+                                                   T dt) const {
         static_assert(is_position_force_v<Accel, State, T>,
                       "odestep: a caller-kept acceleration needs a force of position alone, a(t, x): with "
                       "a(t, x, v) the last kick's acceleration is not the next step's first");
-        State last;
-        const status s = advance<true>(a, x, v, t, dt, &acc, &last);
-        if (s == status::ok) detail::assign(acc, last);
-        return s;
+        if constexpr (in_place) {
+            return advance<true>(a, x, v, t, dt, &acc, &acc);  // nothing to roll back: a(t + dt) into acc itself
+        } else {
+            State last;
+            const status s = advance<true>(a, x, v, t, dt, &acc, &last);
+            if (s == status::ok) detail::assign(acc, last);
+            return s;
+        }
     }
 
     /// Forgets the kept acceleration, so the next step evaluates a afresh. Call it after changing x or v
@@ -209,54 +233,64 @@ private:
             cache_.next.clear();  // until a step succeeds, the kept value belongs to no step
             cache_.acceleration = detail::acceleration(a, t, x);  // (a force of position alone here)
         }
-        State last;
-        const status s = advance<true>(a, x, v, t, dt, &cache_.acceleration, &last);
-        if (s == status::ok) {
-            detail::assign(cache_.acceleration, last);  // evaluated at t + dt, where the next step starts
+        if constexpr (in_place) {
+            const status s = advance<true>(a, x, v, t, dt, &cache_.acceleration, &cache_.acceleration);
             cache_.next.expect(t, dt, x, hit);
+            return s;
+        } else {
+            State last;
+            const status s = advance<true>(a, x, v, t, dt, &cache_.acceleration, &last);
+            if (s == status::ok) {
+                detail::assign(cache_.acceleration, last);  // evaluated at t + dt, where the next step starts
+                cache_.next.expect(t, dt, x, hit);
+            }
+            return s;
         }
-        return s;
     }
 
     // The step: the splitting of x' = v, v' = a(t, x) into the drift (x' = v, v' = 0) and the kick (x' = 0,
     // v' = a(t, x)), each solved exactly, applied in the table's order with its coefficients times dt (see
     // splitting_table), into new x and v that replace them only when every component is finite.
     // Kept: a first-same-as-last table's first kick uses *cached and its last kick's acceleration goes to
-    // *last; otherwise both are evaluated (and the pointers are not read).
+    // *last (the same object in_place: the first kick has read it before the last writes it); otherwise
+    // both are evaluated (and the pointers are not read). in_place, nothing is rolled back: the updates go
+    // to x and v themselves, component n of each read before it is written.
     template <bool Kept, class Accel>
     ODESTEP_INLINE static status advance(Accel& a, State& x, State& v, T t, T dt, const State* cached, State* last) {
         // Two objects, not one struct: the force sees the position's address, and a velocity in the same
         // object would then have to be stored before, and reloaded after, every evaluation not inlined.
-        // No up-front copy of x: a kick before any drift evaluates the force at the caller's x, unchanged.
-        // Nor of v when a force evaluation comes first (lazy_velocity): a value read before a call not
-        // inlined is held across it, at -Os on the stack (7 instructions a step, x86 Euler-Cromer). Else v
-        // is read before any evaluation anyway; the copy costs no more (fewer bytes on Cortex-M0+). Every
-        // table has a drift and a kick, so wx and wv are written in full before the test below.
-        State wx;
-        State wv;
-        if constexpr (!lazy_velocity) detail::assign(wv, v);
+        // No up-front copy of x: a drift before any drift reads the caller's x, and so does a kick before
+        // any drift. Nor of v: an update before any kick reads the caller's v (a value read before a call not
+        // inlined is held across it, at -Os on the stack, 7 instructions a step, x86 Euler-Cromer; and a
+        // copy of a large state is a pass over it); optimizing for size without lazy_velocity, v is copied
+        // into wv first (copy_velocity: fewer bytes on Cortex-M0+). Every table has a drift and a kick, so
+        // wx and wv are written in full before the test below.
+        State local_x;
+        State local_v;
+        State& wx = detail::result_target<in_place>(local_x, x);
+        State& wv = detail::result_target<in_place>(local_v, v);
+        if constexpr (copy_velocity) detail::assign(wv, v);
         run<Kept>(a, x, v, wx, wv, t, dt, cached, last, std::make_index_sequence<plan::updates>{});
         // The finiteness test's sum (detail::finite_sum) of the new x and v, x's components first: any order
         // serves (only a sum that fails goes on to the exact test), and this one needs the fewest register
-        // copies where the force has just taken x apart.
+        // copies where the force has just taken x apart. A large state is summed in lanes, which vectorize
+        // (detail::add_in_lanes).
         //
         // A step that ends with a drift, x <- x + h v with h = c dt and v already final, needs x alone: for
         // a v component that is +-Inf or NaN, h v is +-Inf or NaN (h = 0 included: 0 Inf is NaN), and so is
         // x plus it, whatever x. So a finite new x proves the new v finite, and half the test goes.
         T total = -T(0);  // x + (-0) is x, exactly: the compiler drops that first addition
         if constexpr (checks_finiteness) {
-            ODESTEP_STEP_UNROLL_ALWAYS
-            for (std::size_t n = 0; n < N; ++n) total += wx[n];
-            if constexpr (ends_with_kick) {
-                ODESTEP_STEP_UNROLL_ALWAYS
-                for (std::size_t n = 0; n < N; ++n) total += wv[n];
-            }
+            detail::add_in_lanes(total, wx);
+            if constexpr (ends_with_kick) detail::add_in_lanes(total, wv);
         }
         if (!detail::finite_sum_under<Check>(total) &&
             !(detail::each_finite(wx) && (!ends_with_kick || detail::each_finite(wv))))
             return status::non_finite;
-        detail::assign(x, wx);
-        detail::assign(v, wv);
+        if constexpr (!in_place) {
+            detail::assign(x, wx);
+            detail::assign(v, wv);
+        }
         return status::ok;
     }
 
@@ -272,19 +306,28 @@ private:
                                       const State* cached, State* last) {
         (void)cached, (void)last;
         constexpr T c = plan::coefficient(K);
-        if constexpr (c != T(0)) {
+        if constexpr (c != T(0) && !(Kept && K > 0 && fused_drift_after(K - 1))) {
             const T h = scaled<K>(dt);
-            // What update K starts from: the caller's x until a drift is made; with lazy_velocity, the
-            // caller's v until a kick is made (without, wv is v's copy from the start).
+            // What update K starts from: the caller's x until a drift is made, the caller's v until a kick is
+            // made (with copy_velocity, wv is v's copy from the start).
             const State& px = plan::drift_before(K) ? wx : x;
-            const State& pv = (!lazy_velocity || plan::kick_before(K)) ? wv : v;
+            const State& pv = (copy_velocity || plan::kick_before(K)) ? wv : v;
             if constexpr (!plan::is_kick(K)) {
-                ODESTEP_STEP_UNROLL_ALWAYS
-                for (std::size_t n = 0; n < N; ++n) wx[n] = px[n] + h * pv[n];
+                if constexpr (plain_loops) {
+                    ODESTEP_STEP_UNROLL_ALWAYS
+                    for (std::size_t n = 0; n < N; ++n) wx[n] = px[n] + h * pv[n];
+                } else {
+                    add_scaled(wx, wv, h);  // px is wx (x itself) and pv is wv (v itself)
+                }
             } else if constexpr (fsal && Kept && K == plan::first) {
-                kick(wv, pv, *cached, h);  // a(t, x), kept from the last step's last kick
+                // a(t, x), kept from the last step's last kick
+                if constexpr (fused_drift_after(K)) {
+                    kick_drift<K>(wx, wv, x, pv, *cached, h, dt);
+                } else {
+                    kick(wv, pv, *cached, h);
+                }
             } else if constexpr (fsal && Kept && K == plan::last) {
-                *last = detail::acceleration(a, t + dt, px, pv);  // at x_{n+1}: kept for the next step
+                detail::accelerate(a, t + dt, px, pv, *last);  // at x_{n+1}: kept for the next step
                 kick(wv, pv, *last, h);
             } else {
                 kick(wv, pv, detail::acceleration(a, kick_time<K>(t, dt), px, pv), h);
@@ -292,10 +335,58 @@ private:
         }
     }
 
-    // to = from + h acc, component by component (from may be to).
-    ODESTEP_INLINE static void kick(State& to, const State& from, const State& acc, T h) noexcept {
+    // The kept first kick (a first-same-as-last step with the acceleration kept) and the drift right after
+    // it, made in one pass over the components as a hand-written kick-drift loop is (no evaluation of the
+    // force comes between them): update K + 1 is then made here and emits nothing itself.
+    static constexpr bool fused_drift_after(std::size_t k) noexcept {
+        return !detail::optimizing_for_size && fsal && k == plan::first && k + 1 < plan::updates &&
+               !plan::is_kick(k + 1) && plan::coefficient(k + 1) != T(0);
+    }
+    // wv = pv + h acc, then wx = x + h' wv (h' the drift's c dt), component by component; x is the caller's
+    // (no drift comes before the first kick). in_place, wv is v and wx is x, both updated in place.
+    template <std::size_t K>
+    ODESTEP_INLINE static void kick_drift(State& wx, State& wv, const State& x, const State& pv, const State& acc, T h,
+                                          T dt) noexcept {
+        const T hd = scaled<K + 1>(dt);
+        if constexpr (!in_place) {
+            ODESTEP_STEP_UNROLL_ALWAYS
+            for (std::size_t n = 0; n < N; ++n) {
+                wv[n] = pv[n] + h * acc[n];
+                wx[n] = x[n] + hd * wv[n];
+            }
+        } else {
+            (void)x, (void)pv;
+            kick_drift_in_place(wx, wv, acc, h, hd);
+        }
+    }
+    // v += h acc, then x += h' v (restrict and not always_inline: see add_scaled).
+    static void kick_drift_in_place(State& ODESTEP_RESTRICT x, State& ODESTEP_RESTRICT v,
+                                    const State& ODESTEP_RESTRICT acc, T h, T hd) noexcept {
         ODESTEP_STEP_UNROLL_ALWAYS
-        for (std::size_t n = 0; n < N; ++n) to[n] = from[n] + h * acc[n];
+        for (std::size_t n = 0; n < N; ++n) {
+            v[n] += h * acc[n];
+            x[n] += hd * v[n];
+        }
+    }
+
+    // to = from + h acc, component by component (from may be to). in_place, from is to (v itself).
+    ODESTEP_INLINE static void kick(State& to, const State& from, const State& acc, T h) noexcept {
+        if constexpr (plain_loops) {
+            ODESTEP_STEP_UNROLL_ALWAYS
+            for (std::size_t n = 0; n < N; ++n) to[n] = from[n] + h * acc[n];
+        } else {
+            (void)from;
+            add_scaled(to, acc, h);
+        }
+    }
+    // to += h by, component by component: the in_place step's updates of the caller's x and v, which are
+    // distinct objects, and distinct from the acceleration (the step's contract): said to the compiler,
+    // which can then vectorize the loop without a run-time overlap test (GCC at -O2 makes none). Not
+    // always_inline: GCC 12 inlines an always_inline function before it reads the function's restrict, and
+    // the promise is lost; inlined as an ordinary inline function (flattened at -Os), it is kept.
+    static void add_scaled(State& ODESTEP_RESTRICT to, const State& ODESTEP_RESTRICT by, T h) noexcept {
+        ODESTEP_STEP_UNROLL_ALWAYS
+        for (std::size_t n = 0; n < N; ++n) to[n] += h * by[n];
     }
 
     // c_K dt for update K, without the multiplication when c_K is 1.

@@ -135,38 +135,8 @@ private:
     // loop, which leaves it free to be vectorized. Unchecked: no sum.
     static constexpr bool fused_total = checks_finiteness && detail::optimizing_for_size;
     static constexpr bool separate_total = checks_finiteness && !detail::optimizing_for_size;
-    // The sum in lanes: component n into lane n % lanes, the lanes added into total at the end, so that
-    // the additions of one pass are independent and vectorize (one serial sum is a chain of dependent
-    // additions, which the compiler must keep in order). 32 bytes of lanes, one AVX register: for float
-    // always, for double where AVX is enabled (x86-64 without it, GCC 12 -O2: the serial double sum is
-    // cheaper at N >= 64; docs/performance.md, "Large states"). Only for states of at least four passes of
-    // lanes (double with AVX at N = 8 took an instruction or three more); a smaller state, or another T,
-    // sums serially.
-#if defined(__AVX__)
-    static constexpr bool wide_vectors = true;
-#else
-    static constexpr bool wide_vectors = false;
-#endif
-    static constexpr std::size_t lanes = sizeof(T) == 4 || (sizeof(T) == 8 && wide_vectors) ? 32 / sizeof(T) : 1;
-    ODESTEP_INLINE static void add_all(T& total, const State& v) noexcept {
-        if constexpr (N >= 4 * lanes && lanes > 1) {
-            std::array<T, lanes> lane;
-            ODESTEP_STEP_UNROLL_ALWAYS
-            for (std::size_t l = 0; l < lanes; ++l) lane[l] = v[l];
-            constexpr std::size_t whole = N / lanes * lanes;
-            for (std::size_t n = lanes; n < whole; n += lanes) {
-                ODESTEP_STEP_UNROLL_ALWAYS
-                for (std::size_t l = 0; l < lanes; ++l) lane[l] += v[n + l];
-            }
-            ODESTEP_STEP_UNROLL_ALWAYS
-            for (std::size_t n = whole; n < N; ++n) total += v[n];
-            ODESTEP_STEP_UNROLL_ALWAYS
-            for (std::size_t l = 0; l < lanes; ++l) total += lane[l];
-        } else {
-            ODESTEP_STEP_UNROLL_ALWAYS
-            for (std::size_t n = 0; n < N; ++n) total += v[n];
-        }
-    }
+    // The sum of a whole state: in lanes where that vectorizes (detail::add_in_lanes).
+    ODESTEP_INLINE static void add_all(T& total, const State& v) noexcept { detail::add_in_lanes(total, v); }
     // The unweighted stages' values (unweighted_stages) in the finiteness test of a step that returns
     // Estimates estimates: their components added to the sum, component n (in the fused loop) or all of
     // them, and the exact test of the slow path. Expanded at compile time: for a table whose weights are
