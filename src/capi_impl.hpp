@@ -109,14 +109,23 @@ struct c_accel {
 
 /// The functions of one form and size of a method (see the file's comment): construct the stepper object
 /// of that form and size, and the single steps on the caller's arrays. A step of the other kind of system
-/// than the method's is never bound (the binding checks the kind), so its entry refuses.
+/// than the method's is never bound (the binding checks the kind), so its entry refuses. The steps take
+/// the stepper (its object at a constant offset, which the step folds into its addressing) and have a
+/// form without estimates or a kept acceleration, so that the plain step passes no null arguments and
+/// tests none.
 template <class T>
 struct sized_ops {
+    using stepper = typename c_types<T>::stepper;
     void (*construct)(void* object);
-    /// y' = f: y[0 .. n-1], e1 and e2 (null: not asked for; checked against the method before the call).
-    odestep_status (*step)(void* object, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1, T* e2);
-    /// x'' = a: acc null, a single step (nothing reused from an earlier one); else the caller-kept step.
-    odestep_status (*step_newton)(void* object, const typename c_types<T>::newton* sys, T* x, T* v, T* acc, T t, T dt);
+    /// y' = f: y[0 .. n-1].
+    odestep_status (*step)(stepper* s, const typename c_types<T>::system* sys, T* y, T t, T dt);
+    /// y' = f with e1 (not null) and e2 (null: not asked for), both checked against the method before the call.
+    odestep_status (*step_error)(stepper* s, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1, T* e2);
+    /// x'' = a: a single step (nothing reused from an earlier one).
+    odestep_status (*step_newton)(stepper* s, const typename c_types<T>::newton* sys, T* x, T* v, T t, T dt);
+    /// x'' = a: the caller-kept step (acc not null).
+    odestep_status (*step_newton_kept)(stepper* s, const typename c_types<T>::newton* sys, T* x, T* v, T* acc, T t,
+                                       T dt);
 };
 
 /// A method: what the C functions need to know of a stepper type, and its steps as function pointers.
@@ -272,10 +281,17 @@ ODESTEP_INLINE void store(T* to, const state<T>& s, std::size_t n) noexcept {
 /// that every entry of a method's table is a function.
 template <class T>
 struct refuse {
-    static odestep_status step(void*, const typename c_types<T>::system*, T*, T, T, T*, T*) noexcept {
+    static odestep_status step(stepper_t<T>*, const typename c_types<T>::system*, T*, T, T) noexcept {
         return ODESTEP_INVALID_SETTING;
     }
-    static odestep_status step_newton(void*, const typename c_types<T>::newton*, T*, T*, T*, T, T) noexcept {
+    static odestep_status step_error(stepper_t<T>*, const typename c_types<T>::system*, T*, T, T, T*, T*) noexcept {
+        return ODESTEP_INVALID_SETTING;
+    }
+    static odestep_status step_newton(stepper_t<T>*, const typename c_types<T>::newton*, T*, T*, T, T) noexcept {
+        return ODESTEP_INVALID_SETTING;
+    }
+    static odestep_status step_newton_kept(stepper_t<T>*, const typename c_types<T>::newton*, T*, T*, T*, T,
+                                           T) noexcept {
         return ODESTEP_INVALID_SETTING;
     }
 };
@@ -285,12 +301,19 @@ struct refuse {
 template <class S>
 struct padded_ops {
     using T = typename S::value_type;
-    static odestep_status step(void* object, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1, T* e2) {
-        return to_c(run(object, sys, y, t, dt, e1, e2));
+    static odestep_status step(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y, T t, T dt) {
+        return to_c(run(object_of<T>(s), sys, y, t, dt, nullptr, nullptr));
     }
-    static odestep_status step_newton(void* object, const typename c_types<T>::newton* sys, T* x, T* v, T* acc, T t,
-                                      T dt) {
-        return to_c(run_newton(object, sys, x, v, acc, t, dt));
+    static odestep_status step_error(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1,
+                                     T* e2) {
+        return to_c(run(object_of<T>(s), sys, y, t, dt, e1, e2));
+    }
+    static odestep_status step_newton(stepper_t<T>* s, const typename c_types<T>::newton* sys, T* x, T* v, T t, T dt) {
+        return to_c(run_newton(object_of<T>(s), sys, x, v, nullptr, t, dt));
+    }
+    static odestep_status step_newton_kept(stepper_t<T>* s, const typename c_types<T>::newton* sys, T* x, T* v, T* acc,
+                                           T t, T dt) {
+        return to_c(run_newton(object_of<T>(s), sys, x, v, acc, t, dt));
     }
     ODESTEP_INLINE static status run(void* object, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1,
                                      T* e2) {
@@ -344,33 +367,42 @@ struct exact_ops {
     static S& object(void* storage) noexcept { return *std::launder(static_cast<S*>(storage)); }
     static void construct(void* storage) noexcept { ::new (storage) S(); }
 
+    // One copy of N scalars each way (a constant size: a few moves, at -Os too, where a loop was kept).
     ODESTEP_INLINE static A load(const T* from) noexcept {
         A s;
-        ODESTEP_UNROLL_UNLESS_SIZE
-        for (std::size_t i = 0; i < N; ++i) s[i] = from[i];
+        std::memcpy(s.data(), from, sizeof(T) * N);
         return s;
     }
-    ODESTEP_INLINE static void store(T* to, const A& s) noexcept {
-        ODESTEP_UNROLL_UNLESS_SIZE
-        for (std::size_t i = 0; i < N; ++i) to[i] = s[i];
-    }
+    ODESTEP_INLINE static void store(T* to, const A& s) noexcept { std::memcpy(to, s.data(), sizeof(T) * N); }
 
-    static odestep_status step(void* object, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1, T* e2) {
-        return to_c(run(object, sys, y, t, dt, e1, e2));
+    static odestep_status step(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y, T t, T dt) {
+        return to_c(run<false>(object_of<T>(s), sys, y, t, dt, nullptr, nullptr));
     }
-    static odestep_status step_newton(void* object, const typename c_types<T>::newton* sys, T* x, T* v, T* acc, T t,
-                                      T dt) {
-        return to_c(run_newton(object, sys, x, v, acc, t, dt));
-    }
-    ODESTEP_INLINE static status run(void* storage, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1,
+    static odestep_status step_error(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1,
                                      T* e2) {
+        return to_c(run<true>(object_of<T>(s), sys, y, t, dt, e1, e2));
+    }
+    static odestep_status step_newton(stepper_t<T>* s, const typename c_types<T>::newton* sys, T* x, T* v, T t, T dt) {
+        return to_c(run_newton<false>(object_of<T>(s), sys, x, v, nullptr, t, dt));
+    }
+    static odestep_status step_newton_kept(stepper_t<T>* s, const typename c_types<T>::newton* sys, T* x, T* v, T* acc,
+                                           T t, T dt) {
+        return to_c(run_newton<true>(object_of<T>(s), sys, x, v, acc, t, dt));
+    }
+    // Estimating (e1 not null) and Kept (acc not null) at compile time: each entry point has its own
+    // instantiation of the step, which then has one caller and is inlined into it.
+    template <bool Estimating>
+    ODESTEP_INLINE static status run(void* storage, const typename c_types<T>::system* sys, T* y, T t, T dt,
+                                     [[maybe_unused]] T* e1, [[maybe_unused]] T* e2) {
         const auto fn = sys->f;
         void* const ctx = sys->ctx;
         const auto f = [fn, ctx](T tt, const A& yy, A& dydt) { fn(tt, yy.data(), dydt.data(), ctx); };
         S& s = object(storage);
         A ys = load(y);
-        if constexpr (estimates_of<S>::value >= 1) {
-            if (e1 != nullptr) {
+        if constexpr (Estimating) {
+            if constexpr (estimates_of<S>::value < 1) {
+                return status::invalid_setting;  // (not reached: the entry checks the estimates asked for)
+            } else {
                 A err1;  // written by the step on success, read only then
                 status r = status::ok;
                 if constexpr (estimates_of<S>::value >= 2) {
@@ -390,14 +422,16 @@ struct exact_ops {
                 }
                 return r;
             }
+        } else {
+            const status r = s.step(f, ys, t, dt);
+            if (r == status::ok) store(y, ys);
+            return r;
         }
-        const status r = s.step(f, ys, t, dt);
-        if (r == status::ok) store(y, ys);
-        return r;
     }
 
-    ODESTEP_INLINE static status run_newton(void* storage, const typename c_types<T>::newton* sys, T* x, T* v, T* acc,
-                                            T t, T dt) {
+    template <bool Kept>
+    ODESTEP_INLINE static status run_newton(void* storage, const typename c_types<T>::newton* sys, T* x, T* v,
+                                            [[maybe_unused]] T* acc, T t, T dt) {
         const auto fn = sys->a;
         void* const ctx = sys->ctx;
         const auto a = [fn, ctx](T tt, const A& xx) {
@@ -409,7 +443,7 @@ struct exact_ops {
         A xs = load(x);
         A vs = load(v);
         status r = status::ok;
-        if (acc != nullptr) {
+        if constexpr (Kept) {
             if constexpr (caller_kept<S>::value) {
                 A as = load(acc);
                 r = s.step(a, xs, vs, as, t, dt);
@@ -435,9 +469,11 @@ template <class T, class Family>
 constexpr sized_ops<T> padded_of() noexcept {
     using S = typename Family::template type<state<T>>;
     if constexpr (S::system == system_form::newtonian) {
-        return {&ops_of<S>::construct, &refuse<T>::step, &padded_ops<S>::step_newton};
+        return {&ops_of<S>::construct, &refuse<T>::step, &refuse<T>::step_error, &padded_ops<S>::step_newton,
+                &padded_ops<S>::step_newton_kept};
     } else {
-        return {&ops_of<S>::construct, &padded_ops<S>::step, &refuse<T>::step_newton};
+        return {&ops_of<S>::construct, &padded_ops<S>::step, &padded_ops<S>::step_error, &refuse<T>::step_newton,
+                &refuse<T>::step_newton_kept};
     }
 }
 
@@ -447,9 +483,9 @@ constexpr sized_ops<T> sized() noexcept {
     using S = typename Family::template type<std::array<T, N>>;
     using E = exact_ops<S>;
     if constexpr (S::system == system_form::newtonian) {
-        return {&E::construct, &refuse<T>::step, &E::step_newton};
+        return {&E::construct, &refuse<T>::step, &refuse<T>::step_error, &E::step_newton, &E::step_newton_kept};
     } else {
-        return {&E::construct, &E::step, &refuse<T>::step_newton};
+        return {&E::construct, &E::step, &E::step_error, &refuse<T>::step_newton, &refuse<T>::step_newton_kept};
     }
 }
 
@@ -524,7 +560,8 @@ template <class T>
     if (e1 != nullptr && (m->error_estimates < 1 || (e2 != nullptr && m->error_estimates < 2)))
         return ODESTEP_INVALID_SETTING;
     bind<T>(s, n, false, form_for(m, n));
-    return binding_of<T>(s).ops.step(object_of<T>(s), sys, y, t, dt, e1, e2);
+    const sized_ops<T>& bound = binding_of<T>(s).ops;
+    return e1 == nullptr ? bound.step(s, sys, y, t, dt) : bound.step_error(s, sys, y, t, dt, e1, e2);
 }
 
 /// A single step of y' = f. The stepper bound to this n and kind (one compare) had the method and n
@@ -539,11 +576,10 @@ ODESTEP_INLINE odestep_status step(stepper_t<T>* s, const typename c_types<T>::s
     if (ODESTEP_UNLIKELY(b.first_order_n != n || n == 0)) return step_unbound<T>(s, sys, y, t, dt, e1, e2);
     const status checked = detail::check_step(t, dt);
     if (ODESTEP_UNLIKELY(checked != status::ok)) return to_c(checked);
-    if (e1 != nullptr) {
-        const method_ops<T>* m = ops<T>(s);
-        if (m->error_estimates < 1 || (e2 != nullptr && m->error_estimates < 2)) return ODESTEP_INVALID_SETTING;
-    }
-    return b.ops.step(object_of<T>(s), sys, y, t, dt, e1, e2);
+    if (e1 == nullptr) return b.ops.step(s, sys, y, t, dt);
+    const method_ops<T>* m = ops<T>(s);
+    if (m->error_estimates < 1 || (e2 != nullptr && m->error_estimates < 2)) return ODESTEP_INVALID_SETTING;
+    return b.ops.step_error(s, sys, y, t, dt, e1, e2);
 }
 
 /// step_unbound for x'' = a.
@@ -556,7 +592,8 @@ template <class T>
     const status checked = detail::check_step(t, dt);
     if (checked != status::ok) return to_c(checked);
     bind<T>(s, n, true, form_for(m, n));
-    return binding_of<T>(s).ops.step_newton(object_of<T>(s), sys, x, v, acc, t, dt);
+    const sized_ops<T>& bound = binding_of<T>(s).ops;
+    return acc == nullptr ? bound.step_newton(s, sys, x, v, t, dt) : bound.step_newton_kept(s, sys, x, v, acc, t, dt);
 }
 
 /// A single step of x'' = a, as step.
@@ -570,7 +607,8 @@ ODESTEP_INLINE odestep_status step_newton(stepper_t<T>* s, const typename c_type
     if (ODESTEP_UNLIKELY(b.newton_n != n || n == 0)) return step_newton_unbound<T>(s, sys, x, v, acc, t, dt);
     const status checked = detail::check_step(t, dt);
     if (ODESTEP_UNLIKELY(checked != status::ok)) return to_c(checked);
-    return b.ops.step_newton(object_of<T>(s), sys, x, v, acc, t, dt);
+    if (acc == nullptr) return b.ops.step_newton(s, sys, x, v, t, dt);
+    return b.ops.step_newton_kept(s, sys, x, v, acc, t, dt);
 }
 
 /// The stepper of the loops: the C method behind the stepper interface the C++ loops take. Its traits are

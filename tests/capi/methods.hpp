@@ -15,6 +15,10 @@ struct rk4_family {
     template <class S>
     using type = odestep::rk4<S>;
 };
+struct dp54_family {
+    template <class S>
+    using type = odestep::dormand_prince54<S>;
+};
 struct ab4_family {
     template <class S>
     using type = odestep::adams_bashforth4<S>;
@@ -24,6 +28,7 @@ struct verlet_family {
     using type = odestep::velocity_verlet<S>;
 };
 inline const odestep_method_d rk4_method{odestep::capi::make_ops<double, rk4_family>("rk4")};
+inline const odestep_method_d dp54_method{odestep::capi::make_ops<double, dp54_family>("dp54")};
 inline const odestep_method_d ab4_method{odestep::capi::make_ops<double, ab4_family>("ab4")};
 inline const odestep_method_d verlet_method{odestep::capi::make_ops<double, verlet_family>("velocity_verlet")};
 

@@ -24,6 +24,7 @@ namespace {
 namespace capi = odestep::capi;
 
 using capi_test::ab4_method;
+using capi_test::dp54_method;
 using capi_test::rk4_method;
 using capi_test::verlet_method;
 
@@ -61,7 +62,89 @@ void compare_rk4_sizes(std::index_sequence<I...>) {
     (compare_rk4<I + 1>(), ...);
 }
 
+// Classic RK4 written out here (Kutta 1901; Hairer, Norsett and Wanner, Solving ODE I, Table II.1.1):
+// y + h/6 (k1 + 2 k2 + 2 k3 + k4), an implementation that shares nothing with odestep's templates.
+template <std::size_t N>
+std::array<double, N> hand_rk4(std::array<double, N> y, double t, double h) {
+    std::size_t n = N;
+    std::array<double, N> k1, k2, k3, k4, yt;
+    decay_c(t, y.data(), k1.data(), &n);
+    for (std::size_t i = 0; i < N; ++i) yt[i] = y[i] + h / 2 * k1[i];
+    decay_c(t + h / 2, yt.data(), k2.data(), &n);
+    for (std::size_t i = 0; i < N; ++i) yt[i] = y[i] + h / 2 * k2[i];
+    decay_c(t + h / 2, yt.data(), k3.data(), &n);
+    for (std::size_t i = 0; i < N; ++i) yt[i] = y[i] + h * k3[i];
+    decay_c(t + h, yt.data(), k4.data(), &n);
+    for (std::size_t i = 0; i < N; ++i) y[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+    return y;
+}
+
+// 20 steps of h = 0.1 through the C API against hand_rk4. The two sum the stages in different orders, so
+// they agree to round-off, not bit for bit: a relative 1e-14 (y is of order 1, each step adds a few ulp of
+// rounding to either side); a wrong component, a padding that leaked into the first n or a stage of
+// another size would differ by far more (one step's RK4 increment here is of order 1e-2).
+template <std::size_t N>
+void compare_hand_rk4() {
+    std::size_t n = N;
+    const odestep_system_d sys{decay_c, &n, N};
+    odestep_stepper_d s;
+    REQUIRE(capi::init<double>(&s, &rk4_method) == ODESTEP_OK);
+    std::array<double, N> y{};
+    for (std::size_t i = 0; i < N; ++i) y[i] = 1.0 - 0.25 * static_cast<double>(i);
+    std::array<double, N> hand = y;
+    for (int k = 0; k < 20; ++k) {
+        const double t = 0.1 * k;
+        REQUIRE(capi::step<double>(&s, &sys, y.data(), t, 0.1, nullptr, nullptr) == ODESTEP_OK);
+        hand = hand_rk4(hand, t, 0.1);
+    }
+    for (std::size_t i = 0; i < N; ++i) CHECK(std::fabs(y[i] - hand[i]) <= 1e-14 * std::fmax(1.0, std::fabs(hand[i])));
+}
+
+// The estimating step (odestep_step_error_d's path) against the C++ Dormand-Prince step with its estimate.
+template <std::size_t N>
+void compare_dp54_error() {
+    std::size_t n = N;
+    const odestep_system_d sys{decay_c, &n, N};
+    odestep_stepper_d s;
+    REQUIRE(capi::init<double>(&s, &dp54_method) == ODESTEP_OK);
+    std::array<double, N> y{};
+    for (std::size_t i = 0; i < N; ++i) y[i] = 1.0 + 0.5 * static_cast<double>(i);
+    std::array<double, N> expected = y;
+    std::array<double, N> error{};
+    std::array<double, N> expected_error{};
+    for (int k = 0; k < 5; ++k) {
+        const double t = 0.2 * k;
+        REQUIRE(capi::step<double>(&s, &sys, y.data(), t, 0.2, error.data(), nullptr) == ODESTEP_OK);
+        REQUIRE(odestep::dormand_prince54<std::array<double, N>>{}.step(decay_cpp<N>, expected, t, 0.2,
+                                                                        expected_error) == odestep::status::ok);
+    }
+    CHECK(odestep_test::same_bits(y, expected));
+    CHECK(odestep_test::same_bits(error, expected_error));
+    // A step that makes NaN (t = NaN reaches f only through sin t: refused before as invalid_time, so a
+    // state of NaN instead) leaves y and the estimate as they were.
+    const std::array<double, N> kept = y;
+    const std::array<double, N> kept_error = error;
+    y[0] = not_a_number;
+    CHECK(capi::step<double>(&s, &sys, y.data(), 1.0, 0.2, error.data(), nullptr) == ODESTEP_NON_FINITE);
+    CHECK(std::isnan(y[0]));
+    for (std::size_t i = 1; i < N; ++i) CHECK(y[i] == kept[i]);
+    CHECK(odestep_test::same_bits(error, kept_error));
+}
+
 }  // namespace
+
+TEST_CASE("C API single steps: n = 1 (exact), 2 (exact), 3 and MAX (padded) give RK4 written out by hand") {
+    compare_hand_rk4<1>();
+    compare_hand_rk4<2>();
+    compare_hand_rk4<3>();
+    compare_hand_rk4<capi::max_states>();
+}
+
+TEST_CASE("C API single steps: the estimating step, exact and padded, gives the C++ step and its estimate") {
+    compare_dp54_error<1>();
+    compare_dp54_error<2>();
+    compare_dp54_error<3>();
+}
 
 TEST_CASE("C API single steps: every n, exact or padded, gives the C++ step on std::array<double, n> bit for bit") {
     static_assert(capi::max_states >= 3, "the test needs a padded size");
