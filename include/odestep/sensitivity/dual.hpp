@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "../config.hpp"
 #include "../state.hpp"
 #include "../system.hpp"
 
@@ -55,6 +56,7 @@ struct dual {
     friend constexpr dual operator-(const dual& a) noexcept {
         dual r = a;
         r.value = -r.value;
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t k = 0; k < K; ++k) r.grad[k] = -r.grad[k];
         return r;
     }
@@ -97,6 +99,7 @@ struct dual {
     friend constexpr dual operator*(const dual& a, T c) noexcept {
         dual r = a;
         r.value *= c;
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t k = 0; k < K; ++k) r.grad[k] *= c;
         return r;
     }
@@ -111,6 +114,7 @@ struct dual {
     friend constexpr dual operator/(const dual& a, T c) noexcept {
         dual r = a;
         r.value /= c;
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t k = 0; k < K; ++k) r.grad[k] /= c;
         return r;
     }
@@ -118,20 +122,26 @@ struct dual {
     friend constexpr dual operator/(T c, const dual& a) noexcept {
         dual r = a;
         r.value = c / a.value;
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t k = 0; k < K; ++k) r.grad[k] = -r.value * r.grad[k] / a.value;
         return r;
     }
     // The operations work in place on a copy of an operand: a result built from `dual r;` would zero its K
     // derivatives first (the member initializer) only to overwrite them, K stores per operation.
+    // Each loop over the K derivatives is unrolled (ODESTEP_UNROLL_UNLESS_SIZE): rolled, the copy stays a copy
+    // and each operation a loop of its own; unrolled, the copy folds into the arithmetic (f in duals costs
+    // about what the N x N by N x K product it replaces does).
     /// a += b
     constexpr dual& operator+=(const dual& b) noexcept {
         value += b.value;
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t k = 0; k < K; ++k) grad[k] += b.grad[k];
         return *this;
     }
     /// a -= b
     constexpr dual& operator-=(const dual& b) noexcept {
         value -= b.value;
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t k = 0; k < K; ++k) grad[k] -= b.grad[k];
         return *this;
     }
@@ -139,6 +149,7 @@ struct dual {
     constexpr dual& operator*=(const dual& b) noexcept {
         const T a0 = value;
         const T b0 = b.value;  // b may be *this
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t k = 0; k < K; ++k) grad[k] = a0 * b.grad[k] + b0 * grad[k];
         value = a0 * b0;
         return *this;
@@ -147,6 +158,7 @@ struct dual {
     constexpr dual& operator/=(const dual& b) noexcept {
         const T b0 = b.value;  // b may be *this
         const T q = value / b0;
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t k = 0; k < K; ++k) grad[k] = (grad[k] - q * b.grad[k]) / b0;
         value = q;
         return *this;
@@ -173,6 +185,7 @@ template <class T, std::size_t K>
 constexpr dual<T, K> chain(const dual<T, K>& a, T f, T dfda) noexcept {
     dual<T, K> r = a;
     r.value = f;
+    ODESTEP_UNROLL_UNLESS_SIZE
     for (std::size_t k = 0; k < K; ++k) r.grad[k] *= dfda;
     return r;
 }
@@ -222,6 +235,7 @@ dual<T, K> pow(const dual<T, K>& a, const dual<T, K>& b) noexcept {
     dual<T, K> r;
     r.value = std::pow(a.value, b.value);
     const T log_a = std::log(a.value);
+    ODESTEP_UNROLL_UNLESS_SIZE
     for (std::size_t k = 0; k < K; ++k) r.grad[k] = r.value * (log_a * b.grad[k] + b.value * a.grad[k] / a.value);
     return r;
 }
