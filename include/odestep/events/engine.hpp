@@ -71,12 +71,21 @@ constexpr event_result call_action(Action& action, T t, direction crossed, const
     }
 }
 // What a step changes in a stepper besides the state: nothing, or, for a stepper with a history or a kept value
-// (has_reset: Adams, Beeman, the first-same-as-last Newtonian methods), that memory. A copy is kept from before
-// the step, so that a step the engine rolls back to its start (a failure seen after the stepper stepped:
-// g not finite at the step's end, at a probe or in a location) leaves the stepper as it was, and the next call
-// goes on as if the failed one had not happened. A stepper without memory keeps nothing and pays nothing.
-template <class Stepper, bool = has_reset<Stepper>::value>
-class stepper_memory {
+// (has_reset: Adams, Beeman, the first-same-as-last Newtonian methods), that memory. It is kept from before the
+// step, so that a step the engine rolls back to its start (a failure seen after the stepper stepped: g not finite
+// at the step's end, at a probe or in a location) leaves the stepper as it was, and the next call goes on as if
+// the failed one had not happened: the stepper's own memory() where it publishes one (the part a step changes:
+// Adams), else a copy of the whole stepper. A stepper without memory keeps nothing and pays nothing.
+template <class S, class = void>
+struct has_step_memory : std::false_type {};
+template <class S>
+struct has_step_memory<S, std::void_t<decltype(std::declval<S&>().restore_memory(std::declval<const S&>().memory()))>>
+    : std::true_type {};
+
+template <class Stepper, int = has_step_memory<Stepper>::value ? 2
+                               : has_reset<Stepper>::value     ? 1
+                                                               : 0>
+class stepper_memory {  // 1: a copy of the whole stepper
 public:
     ODESTEP_INLINE explicit stepper_memory(const Stepper& s) : kept_(s) {}
     void restore(Stepper& s) const { s = kept_; }
@@ -85,7 +94,16 @@ private:
     Stepper kept_;
 };
 template <class Stepper>
-class stepper_memory<Stepper, false> {
+class stepper_memory<Stepper, 2> {  // the stepper's memory()
+public:
+    ODESTEP_INLINE explicit stepper_memory(const Stepper& s) : kept_(s.memory()) {}
+    void restore(Stepper& s) const { s.restore_memory(kept_); }
+
+private:
+    decltype(std::declval<const Stepper&>().memory()) kept_;
+};
+template <class Stepper>
+class stepper_memory<Stepper, 0> {
 public:
     ODESTEP_INLINE explicit constexpr stepper_memory(const Stepper&) noexcept {}
     constexpr void restore(Stepper&) const noexcept {}

@@ -48,7 +48,10 @@ namespace odestep {
 ///     the earlier period, the state lags one more period; each later call gains one back.) reached() is the
 ///     last grid time the state reached.
 ///   - An error (non_finite, non_finite_event, a stepper's status, invalid_time once t0 + n dt overflows)
-///     does not count: the state is the last good one, at r.t, and the next call tries again from there.
+///     does not count: the state is the last good one, at r.t, and the next call tries again from there. One
+///     that hands back the tick's own start with nothing fired leaves the loop as it was before the call, the
+///     stepper's memory (a history, a kept acceleration) included; the error-controlled substeps keep their
+///     adapted step size and counts (docs/events.md).
 ///   - At most max_rhs_evals_per_tick / max_g_evals_per_tick evaluations per call (two steps' worth).
 ///
 ///     odestep::event_stepper loop(odestep::rk4<state>{}, odestep::watch(ground));

@@ -155,6 +155,26 @@ public:
     /// How many past derivatives are kept, 0 to k-1; at k-1 the multistep formula steps.
     std::size_t history_size() const noexcept { return count_; }
 
+    /// What a step changes in the stepper: the derivatives kept, how many, and where the next step must start.
+    /// (The history's dt and its first time change only at a step that starts a history, after which a
+    /// restored count of 0 starts it again.)
+    struct memory_type {
+        std::array<State, M> history;  ///< the kept derivatives, as history_
+        T next_t;                      ///< the time the next step is expected at
+        std::size_t count;             ///< derivatives kept
+        std::size_t slot;              ///< the ring's next free slot (0 for a shifted history)
+    };
+    /// The memory a step changes, to hand back to restore_memory(): a caller that may undo a step (the event
+    /// engine, when it rolls a step back to its start) keeps it from before the step.
+    memory_type memory() const noexcept { return memory_type{history_, next_.t, count_, slot_}; }
+    /// Puts back the memory() kept before the last step (which is then undone: the caller puts y back too).
+    void restore_memory(const memory_type& m) noexcept {
+        history_ = m.history;
+        next_.t = m.next_t;
+        count_ = m.count;
+        slot_ = m.slot;
+    }
+
 private:
     // The history's layout. A small state's is newest first (history_[j] = f_{n-1-j}), shifted down as a block
     // after each step, so that every read is at a place fixed at compile time. A large state's is a ring
