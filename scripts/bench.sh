@@ -383,8 +383,8 @@ Written by \`scripts/bench.sh --large\` (this section only; the full run keeps i
 \`bench/large_state.cpp\`; discussion: docs/performance.md, "Large states". $("$CXX" --version | head -n 1),
 \`${common_flags[*]}\` and the -O of each row; instructions per step (callgrind, only inside each variant's
 step function; glibc's memcpy kept off \`rep movsb\`, see the script). RK4 on y' = -k y, velocity Verlet on
-x'' = -w^2 x (the acceleration kept by the caller; odestep's force returned by value, the hand loop's in
-place). ratio: odestep over the hand loop, against issue 27's target of at most 1.05 (met, or missed and
+x'' = -w^2 x (the acceleration kept by the caller; the force written in place, odestep's and the hand
+loop's). ratio: odestep over the hand loop, against issue 27's target of at most 1.05 (met, or missed and
 by how much the ratio exceeds 1.05).
 
 EOF

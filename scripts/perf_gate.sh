@@ -36,10 +36,10 @@ limits=(
   "dp54 float unchecked 0.93"
   "dp54 double checked 0.76"
   "dp54 double unchecked 0.93"
-  "vv float checked 1.03"
-  "vv float unchecked 1.58"
-  "vv double checked 0.69"
-  "vv double unchecked 1.57"
+  "vv float checked 0.79"
+  "vv float unchecked 1.02"
+  "vv double checked 0.57"
+  "vv double unchecked 1.02"
   "c_api double step 1.98"
 )
 
