@@ -51,7 +51,7 @@
 #   scripts/bench.sh --adaptive
 #                              the adaptive loop's instructions (bench/adaptive_count.cpp, issue 27 item 5): free-running
 #                              DP 5(4) on Lorenz to t = 10 against Odeint's controlled dopri5 at tol 1e-4,
-#                              1e-6, 1e-8, -O2; prints a markdown table (instructions, evaluations, per
+#                              1e-6, 1e-7, 1e-8, -O2; prints a markdown table (instructions, evaluations, per
 #                              evaluation, achieved error), writes nothing in the tree (a few seconds).
 # All end with the line "bench: N passed, M failed".
 #

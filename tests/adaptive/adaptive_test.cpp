@@ -126,6 +126,58 @@ TEST_CASE("step_control: the PI factor, its limits, and no growth after a reject
     CHECK(bad.check() == status::invalid_setting);
 }
 
+// The PI factor from logarithms (detail::pi_factor, one exp a step) against its closed form
+// safety err^(-alpha) err_prev^(beta) evaluated here in long double with powl, for the gains of k = 2 .. 8,
+// over err from 1e-8 to 1 and err_prev from 1e-4 to 1 (where the clamps leave it alone): within the
+// documented 16 epsilon (relative, the bound control.hpp states; checked at 32). The engines' memory
+// (pi_memory: ln err_prev kept, floored at ln 1e-4) gives the same factor on its second step.
+template <class T>
+void check_pi_factor_against_closed_form() {
+    const odestep::step_control<T> c{};
+    const long double bound = 32.0L * static_cast<long double>(std::numeric_limits<T>::epsilon());
+    int unclamped = 0;
+    for (int k = 2; k <= 8; ++k) {
+        const auto g = odestep::gains_for(c, k);
+        for (int i = 0; i <= 80; ++i) {
+            const T err = static_cast<T>(std::pow(10.0L, -8.0L + 0.1L * i));
+            for (int j = 0; j <= 8; ++j) {
+                const T prev = static_cast<T>(std::pow(10.0L, -4.0L + 0.5L * j));
+                const long double closed = 0.9L *
+                                           std::pow(static_cast<long double>(err), -static_cast<long double>(g.alpha)) *
+                                           std::pow(static_cast<long double>(prev), static_cast<long double>(g.beta));
+                if (!(closed > 0.21L && closed < 4.99L)) continue;  // clamped: compared below
+                ++unclamped;
+                const T f = odestep::step_factor(c, g, k, err, prev, false);
+                CHECK(std::fabs(static_cast<long double>(f) / closed - 1.0L) <= bound);
+                // The engine's memory: a first accepted step with norm prev, then one with norm err.
+                odestep::detail::pi_memory<T> m;
+                T log_e = T(0);
+                const T first = m.next_step(c, k, T(1), prev, log_e);
+                CHECK(first > T(0));
+                m.accept(first, T(1), log_e);
+                const T second = m.next_step(c, k, T(1), err, log_e);
+                CHECK(std::fabs(static_cast<long double>(second) / closed - 1.0L) <= bound);
+            }
+        }
+    }
+    CHECK(unclamped > 1000);
+    // The floor: a previous norm below 1e-4 counts as 1e-4 (Hairer's codes), and the clamps.
+    odestep::detail::pi_memory<T> m;
+    T log_e = T(0);
+    CHECK(m.next_step(c, 5, T(1), T(1e-30f), log_e) == c.max_factor);
+    m.accept(T(1), T(1), log_e);
+    const long double floored = 0.9L * std::pow(0.5L, -0.14L) * std::pow(1e-4L, 0.08L);
+    CHECK(std::fabs(static_cast<long double>(m.next_step(c, 5, T(1), T(0.5f), log_e)) / floored - 1.0L) <= bound);
+    // 0.9 * 1^(-0.14) * (1e-30)^(0.08) = 0.0036: below min_factor.
+    CHECK(odestep::step_factor(c, odestep::gains_for(c, 5), 5, T(1), T(1e-30f), false) == c.min_factor);
+}
+
+TEST_CASE("step_control: the PI factor from logarithms matches its closed form (double, float, long double)") {
+    check_pi_factor_against_closed_form<double>();
+    check_pi_factor_against_closed_form<float>();
+    check_pi_factor_against_closed_form<long double>();
+}
+
 TEST_CASE("initial_step: Hairer's algorithm on y' = y, by hand") {
     // y0 = 1, f0 = 1, rtol = atol = 1e-6: sc = 2e-6, d0 = d1 = 5e5, h0 = 0.01; f1 = 1.01, d2 = 5e5;
     // h1 = (0.01 / 5e5)^(1/5); h = min(100 h0, h1) = h1.

@@ -55,7 +55,7 @@ struct embedded_pair {
         E >= 2 ? tab.order : (tab.order < tab.embedded_order[0] ? tab.order : tab.embedded_order[0]) + 1;
 
     /// k[0] = f(t, y) is given (finite). Fills k[1 .. S-1], y_new = y + h sum b_i k_i and
-    /// err = h sum (b_i - bhat_i) k_i (err2 from the second estimate, if any), and returns true; returns false
+    /// err = h sum (b_i - bhat_i) k_i (err2 from the second estimate; untouched with one), and returns true; returns false
     /// at the first stage where f gave NaN or Inf, with no further call of f (a user's f may trap on NaN or
     /// index a table by y), leaving the outputs unspecified. t_end is t + h as the caller has it (the
     /// interval's end, exactly): the stage with c = 1 is evaluated there. Every sum is expanded at compile
@@ -70,11 +70,7 @@ struct embedded_pair {
         for (std::size_t n = 0; n < N; ++n) {
             if constexpr (!next_from_stage) y_new[n] = y[n] + sum_form::template sum<b_weights>(k, n, h);
             err[n] = sum_form::template sum<error_weights<0>>(k, n, h);
-            if constexpr (E >= 2) {
-                err2[n] = sum_form::template sum<error_weights<1>>(k, n, h);
-            } else {
-                err2[n] = T(0);
-            }
+            if constexpr (E >= 2) err2[n] = sum_form::template sum<error_weights<1>>(k, n, h);
         }
         return true;
     }
@@ -93,10 +89,20 @@ struct embedded_pair {
     template <std::size_t Which>
     using error_weights = typename detail::table_rows<Method, T>::template error_weights<Which>;
 
+    /// The step's results are finite: y_new and the estimates (the second only where the table has one).
+    ODESTEP_INLINE static bool finite(const State& y_new, const State& err, const State& err2) noexcept {
+        if constexpr (E >= 2) {
+            return all_finite(y_new, err, err2);
+        } else {
+            (void)err2;
+            return all_finite(y_new, err);
+        }
+    }
+
     /// The norm the controller sees: the scaled RMS norm of err; with two estimates (DOP853) Hairer's
     /// combination e5^2 / sqrt(e5^2 + 0.01 e3^2) of the two norms (DOP853's ERR/DENO, HNW I, Sec. II.10).
-    static T norm(const State& err, const State& err2, const State& y, const State& y_new,
-                  const tolerances<State>& tol) noexcept {
+    ODESTEP_INLINE static T norm(const State& err, const State& err2, const State& y, const State& y_new,
+                                 const tolerances<State>& tol) noexcept {
         const T e = scaled_error_norm(err, y, y_new, tol);
         if constexpr (E >= 2) {
             const T e3 = scaled_error_norm(err2, y, y_new, tol);
@@ -210,16 +216,17 @@ public:
         State err;
         State err2;
         // Every stage was checked as it came (k[0], kept, was checked when it was computed).
-        if (!pair::step(f, y, t, h, last ? t_end : t + h, k, y_new, err, err2) || !detail::all_finite(y_new, err, err2))
+        if (!pair::step(f, y, t, h, last ? t_end : t + h, k, y_new, err, err2) || !pair::finite(y_new, err, err2))
             return status::non_finite;
         const T e = pair::norm(err, err2, y, y_new, tol_);
         const T habs = detail::abs_value(h);
         if (e <= T(1)) {
-            T next = ctl_.next_step(control_, estimate_order, habs, e);
+            T log_e;
+            T next = ctl_.next_step(control_, estimate_order, habs, e, log_e);
             // A step shortened to land on t_end (or to split the rest) says nothing against the size planned:
             // keep the larger.
             if ((last || p.split) && p.mag > next) next = p.mag;
-            ctl_.accept(next, habs, e);
+            ctl_.accept(next, habs, log_e);
             sink(static_cast<const T&>(t), static_cast<const State&>(y), static_cast<const T&>(h),
                  static_cast<const std::array<State, pair::S>&>(k), static_cast<const State&>(y_new));
             const T t_new = last ? t_end : t + h;

@@ -63,8 +63,8 @@ struct tolerances {
 /// any term is not finite. Each term is divided before it is squared, so an error far below the tolerance
 /// underflows harmlessly and one far above it overflows to Inf (rejected), never to NaN.
 template <class State>
-value_type_t<State> scaled_error_norm(const State& err, const State& y_old, const State& y_new,
-                                      const tolerances<State>& tol) noexcept {
+ODESTEP_INLINE value_type_t<State> scaled_error_norm(const State& err, const State& y_old, const State& y_new,
+                                                     const tolerances<State>& tol) noexcept {
     using T = value_type_t<State>;
     constexpr std::size_t N = state_traits<State>::size;
     T sum = T(0);
@@ -136,13 +136,44 @@ constexpr pi_gains<T> gains_for(const step_control<T>& s, int k) noexcept {
     return {s.alpha > T(0) ? s.alpha : T(7) / (T(10) * kk), s.beta >= T(0) ? s.beta : T(4) / (T(10) * kk)};
 }
 
+namespace detail {
+/// The accepted step's PI factor from the natural logarithms of the two norms (err > 0):
+///     safety exp(beta ln err_prev - alpha ln err) = safety err^(-alpha) err_prev^(beta)
+/// within [min_factor, max_factor] and at most 1 after a rejection. One exp where the closed form takes two
+/// pow (the engines keep ln err_prev from the step before, so a step takes one log and one exp). With the
+/// default gains and k >= 2, wherever the factor is not clamped its two terms are at most 4 in magnitude
+/// (|beta ln err_prev| <= 0.2 |ln 1e-4|, and alpha |ln err| is what keeps safety exp(...) within
+/// [min_factor, max_factor]), so the exponent carries an absolute error of a few epsilon and the factor a
+/// relative one of at most 16 epsilon against the closed form (tests/adaptive/adaptive_test.cpp checks it
+/// over a sweep of both norms).
+template <class T>
+ODESTEP_INLINE T pi_factor(const step_control<T>& s, pi_gains<T> g, T log_err, T log_err_prev,
+                           bool after_rejection) noexcept {
+    using std::exp;
+    // beta = 0 is the integral controller: err_prev plays no part (not even a zero one: 0 * -Inf is NaN).
+    const T memory = g.beta != T(0) ? g.beta * log_err_prev : T(0);
+    T f = s.safety * exp(memory - g.alpha * log_err);
+    if (f > s.max_factor) f = s.max_factor;
+    if (after_rejection && f > T(1)) f = T(1);
+    return max_value(s.min_factor, f);
+}
+
+/// ln 1e-4, the floor of the previous accepted norm's logarithm (pi_memory::log_err_prev).
+template <class T>
+constexpr T log_err_floor() noexcept {
+    return -T(9.21034037197618273607196581873745730L);
+}
+}  // namespace detail
+
 /// The factor h_new / h after a step with error norm err (HNW's stabilized control, see step_control):
 ///   accepted (err <= 1): safety err^(-alpha) err_prev^(beta), within [min_factor, max_factor], and at most
-///                        1 when the step before was rejected;
+///                        1 when the step before was rejected (computed as detail::pi_factor does, from
+///                        logarithms: the closed form to within 16 epsilon, relative);
 ///   rejected (err > 1):  safety err^(-1/k), within [min_factor, 1).
 /// err_prev is the previous accepted step's norm (at least 1e-4, as Hairer's codes keep it).
 template <class T>
 T step_factor(const step_control<T>& s, pi_gains<T> g, int k, T err, T err_prev, bool after_rejection) noexcept {
+    using std::log;
     using std::pow;
     if (err > T(1)) {
         const T f = s.safety * pow(err, -T(1) / static_cast<T>(k));
@@ -150,10 +181,7 @@ T step_factor(const step_control<T>& s, pi_gains<T> g, int k, T err, T err_prev,
     }
     // err = 0 (a polynomial the pair integrates exactly): the largest growth.
     if (!(err > T(0))) return after_rejection ? T(1) : s.max_factor;
-    T f = s.safety * pow(err, -g.alpha) * pow(err_prev, g.beta);
-    if (f > s.max_factor) f = s.max_factor;
-    if (after_rejection && f > T(1)) f = T(1);
-    return detail::max_value(s.min_factor, f);
+    return detail::pi_factor(s, g, log(err), log(err_prev), after_rejection);
 }
 
 namespace detail {
@@ -268,28 +296,40 @@ struct step_memory {
 /// previous accepted error norm.
 template <class T>
 struct pi_memory : step_memory<T> {
-    T err_prev = T(1) / T(10000);  ///< the previous accepted step's norm, at least 1e-4
+    /// ln of the previous accepted step's norm, at least ln 1e-4 (the norm kept as its logarithm: the next
+    /// step's factor then costs one log and one exp, detail::pi_factor)
+    T log_err_prev = log_err_floor<T>();
 
     /// Forgets the step size and the controller's memory.
     void restart() noexcept {
         this->h = T(0);
-        err_prev = T(1) / T(10000);
+        log_err_prev = log_err_floor<T>();
         this->rejected_last = false;
         this->failures = 0;
     }
-    /// |h| step_factor after a step of size habs with error norm e (k the estimate's order).
-    ODESTEP_INLINE T next_step(const step_control<T>& c, int k, T habs, T e) const noexcept {
-        return habs * step_factor(c, gains_for(c, k), k, e, err_prev, this->rejected_last);
+    /// |h| step_factor after an accepted step (e <= 1) of size habs with error norm e (k the estimate's
+    /// order); log_e receives what accept() keeps of e (ln e, or the floor for e = 0).
+    ODESTEP_INLINE T next_step(const step_control<T>& c, int k, T habs, T e, T& log_e) const noexcept {
+        using std::log;
+        // e = 0 (a polynomial the pair integrates exactly): the largest growth, as step_factor.
+        if (!(e > T(0))) {
+            log_e = log_err_floor<T>();
+            return habs * (this->rejected_last ? T(1) : c.max_factor);
+        }
+        log_e = log(e);
+        return habs * pi_factor(c, gains_for(c, k), log_e, log_err_prev, this->rejected_last);
     }
     /// Rejected by the error test (e > 1): the next |h| shrunk by step_factor.
     ODESTEP_INLINE status reject_error(const step_control<T>& c, int k, T habs, T e) noexcept {
-        return this->shrink(habs, step_factor(c, gains_for(c, k), k, e, err_prev, this->rejected_last));
+        // err_prev plays no part in a rejection's factor.
+        return this->shrink(habs, step_factor(c, gains_for(c, k), k, e, T(1), this->rejected_last));
     }
-    /// Accepted with error norm e, the next |h| `next` (this step's size when next underflowed to zero: a zero
-    /// would send the next attempt back to the first-step estimate, one evaluation over the published bound).
-    void accept(T next, T habs, T e) noexcept {
+    /// Accepted with error norm e (log_e from next_step), the next |h| `next` (this step's size when next
+    /// underflowed to zero: a zero would send the next attempt back to the first-step estimate, one
+    /// evaluation over the published bound).
+    void accept(T next, T habs, T log_e) noexcept {
         this->h = next > T(0) ? next : habs;
-        err_prev = max_value(e, T(1) / T(10000));
+        log_err_prev = max_value(log_e, log_err_floor<T>());
         this->rejected_last = false;
         this->failures = 0;
     }

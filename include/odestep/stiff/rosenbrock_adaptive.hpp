@@ -160,10 +160,11 @@ public:
         if (!(e <= std::numeric_limits<T>::max())) e = std::numeric_limits<T>::max();
         const T habs = detail::abs_value(h);
         if (e <= T(1)) {
-            T next = ctl_.next_step(control_, estimate_order, habs, e);
+            T log_e;
+            T next = ctl_.next_step(control_, estimate_order, habs, e, log_e);
             // A step shortened to land on t_end says nothing against the size planned, unless it asked for less.
             if (last && !(next < habs) && p.mag > next) next = p.mag;
-            ctl_.accept(next, habs, e);
+            ctl_.accept(next, habs, log_e);
             sink(static_cast<const T&>(t), static_cast<const T&>(h), static_cast<const State&>(y),
                  static_cast<const State&>(y_new));
             detail::assign(y, y_new);
