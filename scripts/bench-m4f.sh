@@ -11,6 +11,9 @@
 # never because of a ratio: the figures are reported, not asserted.
 #
 # Usage: scripts/bench-m4f.sh [--report FILE] [--docs FILE] [extra compiler flags...]
+#        scripts/bench-m4f.sh --c-api   the C API's RK4 step instead (bench/m4f/c_api.cpp: odestep_step_f, n = 4
+#                                       of ODESTEP_C_MAX_STATES 8, against the C++ step with the same f pointer),
+#                                       the library built with ODESTEP_C_EXACT_STATES 0 and 8, at -O2 and -Os
 #   --report FILE  also write the table (with its heading) to FILE (scripts/audit.sh: build/audit/)
 #   --docs FILE    replace the lines between "<!-- bench-m4f:begin -->" and "<!-- bench-m4f:end -->" in
 #                  FILE with the table (docs/cortex-m.md), if every build, run and check passed
@@ -21,6 +24,36 @@
 set -uo pipefail
 cd "$(dirname "$0")/.." || exit 2
 report_file="" docs_file=""
+if [[ ${1:-} == --c-api ]]; then
+  read -r -a cpu <<< "$(sed -n 's/^set(ODESTEP_TARGET_CPU_FLAGS "\([^"]*\)").*/\1/p' toolchains/cortex-m4f.cmake)"
+  dir=$(mktemp -d "${TMPDIR:-/tmp}/odestep-m4f-capi.XXXXXX")
+  trap 'rm -rf "$dir"' EXIT
+  status=0
+  echo "| ODESTEP_C_EXACT_STATES | -O | odestep_step_f | C++ step, f by pointer | ratio | largest difference | check |"
+  echo "|--:|---|--:|--:|--:|--:|---|"
+  for exact in 0 8; do
+    for opt in -O2 -Os; do
+      common=("${cpu[@]}" "$opt" -std=c++17 -DNDEBUG -fno-exceptions -fno-rtti -ffp-contract=off -ffunction-sections
+              -fdata-sections -Iinclude)
+      if ! { arm-none-eabi-g++ "${common[@]}" -DODESTEP_C_EXACT_STATES=$exact -c src/capi.cpp -o "$dir/capi.o" &&
+             arm-none-eabi-g++ "${common[@]}" -DODESTEP_C_EXACT_STATES=$exact -c src/capi_float.cpp -o "$dir/capi_float.o" &&
+             arm-none-eabi-g++ "${common[@]}" -Wall -Wextra -Wdouble-promotion -c bench/m4f/c_api.cpp -o "$dir/main.o" &&
+             arm-none-eabi-g++ "${cpu[@]}" "$dir/main.o" "$dir/capi.o" "$dir/capi_float.o" toolchains/board/startup.cpp \
+               toolchains/board/syscalls.cpp -nostartfiles -Ltoolchains/board -Ttoolchains/board/mps2.ld \
+               --specs=rdimon.specs -Wl,--gc-sections -o "$dir/c_api.elf"; }; then
+        echo "bench-m4f: the C API build (E $exact, $opt) failed" >&2
+        status=1
+        continue
+      fi
+      line=$(timeout 120 qemu-system-arm -M mps2-an386 -nographic -monitor none \
+               -semihosting-config enable=on,target=native -icount shift=0 -kernel "$dir/c_api.elf") || status=1
+      # C_API <odestep> <cpp_fnptr> <ratio> <difference> <ok | FAIL>
+      awk -F'\t' -v e="$exact" -v o="$opt" '$1 == "C_API" { printf "| %s | %s | %s | %s | %s | %s | %s |\n", e, o, $2, $3, $4, $5, $6 }' <<< "$line"
+      grep -q 'ok$' <<< "$line" || status=1
+    done
+  done
+  exit $status
+fi
 while (($# > 0)); do
   case $1 in
     --report) report_file=$2; shift 2 ;;

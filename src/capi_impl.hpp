@@ -189,7 +189,10 @@ template <class T>
 struct binding {
     std::size_t first_order_n;
     std::size_t newton_n;
-    sized_ops<T> ops;  // a copy of the bound form's, one load from a call
+    const sized_ops<T>* form;  // the bound form (its estimating and kept steps)
+    // Copies of the form's plain steps, one load from a call (not the whole form: the storage's size)
+    decltype(sized_ops<T>::step) step;
+    decltype(sized_ops<T>::step_newton) step_newton;
 };
 
 template <class T>
@@ -535,7 +538,9 @@ void bind(stepper_t<T>* s, std::size_t n, bool newton, const sized_ops<T>* form)
     form->construct(object_of<T>(s));
     b.first_order_n = newton ? 0 : n;
     b.newton_n = newton ? n : 0;
-    b.ops = *form;
+    b.form = form;
+    b.step = form->step;
+    b.step_newton = form->step_newton;
 }
 
 /// Forgets the binding: the next single step constructs its object afresh.
@@ -544,7 +549,9 @@ void unbind(stepper_t<T>* s) noexcept {
     binding<T>& b = binding_of<T>(s);
     b.first_order_n = 0;
     b.newton_n = 0;
-    b.ops = {};
+    b.form = nullptr;
+    b.step = nullptr;
+    b.step_newton = nullptr;
 }
 
 /// A single step of y' = f whose stepper is not bound to its n (the first step, or one with another n or
@@ -560,8 +567,17 @@ template <class T>
     if (e1 != nullptr && (m->error_estimates < 1 || (e2 != nullptr && m->error_estimates < 2)))
         return ODESTEP_INVALID_SETTING;
     bind<T>(s, n, false, form_for(m, n));
-    const sized_ops<T>& bound = binding_of<T>(s).ops;
-    return e1 == nullptr ? bound.step(s, sys, y, t, dt) : bound.step_error(s, sys, y, t, dt, e1, e2);
+    const binding<T>& b = binding_of<T>(s);
+    return e1 == nullptr ? b.step(s, sys, y, t, dt) : b.form->step_error(s, sys, y, t, dt, e1, e2);
+}
+
+/// step_unbound without estimates: its arguments all in registers where the arguments of step_unbound are
+/// not (AAPCS: four integer registers), so that the plain step's entry reaches it by a tail call and needs
+/// no stack frame of its own (Cortex-M4F, -Os: a frame and a push of eight registers on every step).
+template <class T>
+[[gnu::noinline, gnu::cold]] odestep_status step_unbound_plain(stepper_t<T>* s, const typename c_types<T>::system* sys,
+                                                               T* y, T t, T dt) {
+    return step_unbound<T>(s, sys, y, t, dt, nullptr, nullptr);
 }
 
 /// A single step of y' = f. The stepper bound to this n and kind (one compare) had the method and n
@@ -573,13 +589,16 @@ ODESTEP_INLINE odestep_status step(stepper_t<T>* s, const typename c_types<T>::s
         return ODESTEP_INVALID_SETTING;
     const binding<T>& b = binding_of<T>(s);
     const std::size_t n = sys->n;
-    if (ODESTEP_UNLIKELY(b.first_order_n != n || n == 0)) return step_unbound<T>(s, sys, y, t, dt, e1, e2);
+    if (ODESTEP_UNLIKELY(b.first_order_n != n || n == 0)) {
+        if (e1 == nullptr) return step_unbound_plain<T>(s, sys, y, t, dt);
+        return step_unbound<T>(s, sys, y, t, dt, e1, e2);
+    }
     const status checked = detail::check_step(t, dt);
     if (ODESTEP_UNLIKELY(checked != status::ok)) return to_c(checked);
-    if (e1 == nullptr) return b.ops.step(s, sys, y, t, dt);
+    if (e1 == nullptr) return b.step(s, sys, y, t, dt);
     const method_ops<T>* m = ops<T>(s);
     if (m->error_estimates < 1 || (e2 != nullptr && m->error_estimates < 2)) return ODESTEP_INVALID_SETTING;
-    return b.ops.step_error(s, sys, y, t, dt, e1, e2);
+    return b.form->step_error(s, sys, y, t, dt, e1, e2);
 }
 
 /// step_unbound for x'' = a.
@@ -592,8 +611,16 @@ template <class T>
     const status checked = detail::check_step(t, dt);
     if (checked != status::ok) return to_c(checked);
     bind<T>(s, n, true, form_for(m, n));
-    const sized_ops<T>& bound = binding_of<T>(s).ops;
-    return acc == nullptr ? bound.step_newton(s, sys, x, v, t, dt) : bound.step_newton_kept(s, sys, x, v, acc, t, dt);
+    const binding<T>& b = binding_of<T>(s);
+    return acc == nullptr ? b.step_newton(s, sys, x, v, t, dt) : b.form->step_newton_kept(s, sys, x, v, acc, t, dt);
+}
+
+/// step_newton_unbound without a kept acceleration (see step_unbound_plain).
+template <class T>
+[[gnu::noinline, gnu::cold]] odestep_status step_newton_unbound_plain(stepper_t<T>* s,
+                                                                      const typename c_types<T>::newton* sys, T* x,
+                                                                      T* v, T t, T dt) {
+    return step_newton_unbound<T>(s, sys, x, v, nullptr, t, dt);
 }
 
 /// A single step of x'' = a, as step.
@@ -604,11 +631,14 @@ ODESTEP_INLINE odestep_status step_newton(stepper_t<T>* s, const typename c_type
         return ODESTEP_INVALID_SETTING;
     const binding<T>& b = binding_of<T>(s);
     const std::size_t n = sys->n;
-    if (ODESTEP_UNLIKELY(b.newton_n != n || n == 0)) return step_newton_unbound<T>(s, sys, x, v, acc, t, dt);
+    if (ODESTEP_UNLIKELY(b.newton_n != n || n == 0)) {
+        if (acc == nullptr) return step_newton_unbound_plain<T>(s, sys, x, v, t, dt);
+        return step_newton_unbound<T>(s, sys, x, v, acc, t, dt);
+    }
     const status checked = detail::check_step(t, dt);
     if (ODESTEP_UNLIKELY(checked != status::ok)) return to_c(checked);
-    if (acc == nullptr) return b.ops.step_newton(s, sys, x, v, t, dt);
-    return b.ops.step_newton_kept(s, sys, x, v, acc, t, dt);
+    if (acc == nullptr) return b.step_newton(s, sys, x, v, t, dt);
+    return b.form->step_newton_kept(s, sys, x, v, acc, t, dt);
 }
 
 /// The stepper of the loops: the C method behind the stepper interface the C++ loops take. Its traits are
