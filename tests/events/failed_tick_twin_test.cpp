@@ -193,3 +193,35 @@ TEST_CASE("failed tick: a Newtonian loop with a history or a kept acceleration g
 TEST_CASE("failed tick: a loop over a stepper without memory goes on as its copy (RK4)") {
     check_all_failures<odestep::rk4<state>, 1>("rk4");
 }
+
+namespace {
+// A stepper of the user's with reset() and no memory(), whose object counts its own step calls (as the C API's
+// adapter counts evaluations): the roll-back cannot know what its copy would undo, so it resets it, and the
+// count keeps the failed step.
+struct counting_rk4 : odestep::rk4<state> {
+    std::uint64_t steps = 0;
+    int resets = 0;
+    template <class System>
+    odestep::status step(System&& f, state& y, double t, double h) {
+        ++steps;
+        return odestep::rk4<state>::step(f, y, t, h);
+    }
+    void reset() noexcept { ++resets; }
+};
+}  // namespace
+
+TEST_CASE("failed tick: a stepper without memory() is reset after the roll-back, and its own counts count the step") {
+    glitch w;
+    std::uint64_t calls = 0;
+    auto loop = odestep::make_event_stepper(
+        counting_rk4{}, odestep::watch(odestep::make_event<state>(g_of_t<1>{&w, inf}, odestep::direction::either)));
+    state y{1.0, 0.5};
+    decay f{&w, &calls};
+    REQUIRE(loop.start(0.0, dt, y) == odestep::status::ok);
+    const int resets_at_start = loop.stepper().resets;  // (start resets the stepper)
+    for (int i = 0; i < 3; ++i) REQUIRE(loop.tick(f, y).status == odestep::status::ok);
+    w = glitch{3 * dt, 5 * dt, false};  // g Inf at the end of the fourth tick
+    CHECK(loop.tick(f, y).status == odestep::status::non_finite_event);
+    CHECK(loop.stepper().steps == 4);  // three ticks and the failed one: one step call each
+    CHECK(loop.stepper().resets == resets_at_start + 1);
+}

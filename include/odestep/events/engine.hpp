@@ -70,43 +70,38 @@ constexpr event_result call_action(Action& action, T t, direction crossed, const
         }
     }
 }
-// What a step changes in a stepper besides the state: nothing, or, for a stepper with a history or a kept value
-// (has_reset: Adams, Beeman, the first-same-as-last Newtonian methods), that memory. It is kept from before the
-// step, so that a step the engine rolls back to its start (a failure seen after the stepper stepped: g not finite
-// at the step's end, at a probe or in a location) leaves the stepper as it was, and the next call goes on as if
-// the failed one had not happened: the stepper's own memory() where it publishes one (the part a step changes:
-// Adams), else a copy of the whole stepper. A stepper without memory keeps nothing and pays nothing.
+// What a step changes in a stepper besides the state: nothing, or, for a stepper that publishes it as memory()
+// (the library's Adams methods, Beeman, the predictor-corrector, half-step, the position-form leapfrog, the
+// first-same-as-last splittings), its history or kept acceleration. It is kept from before the step, so that a
+// step the engine rolls back to its start (a failure seen after the stepper stepped: g not finite at the step's
+// end, at a probe or in a location) leaves the stepper as it was, and the next call goes on as if the failed one
+// had not happened. A stepper without memory() keeps nothing and pays nothing; one that has reset() (a user's
+// stepper, the C API's adapter, whose copy would also hold its counts) is reset after a roll-back, as after any
+// step that does not end where the stepper expects.
 template <class S, class = void>
 struct has_step_memory : std::false_type {};
 template <class S>
 struct has_step_memory<S, std::void_t<decltype(std::declval<S&>().restore_memory(std::declval<const S&>().memory()))>>
     : std::true_type {};
 
-template <class Stepper, int = has_step_memory<Stepper>::value ? 2
-                               : has_reset<Stepper>::value     ? 1
-                                                               : 0>
-class stepper_memory {  // 1: a copy of the whole stepper
-public:
-    ODESTEP_INLINE explicit stepper_memory(const Stepper& s) : kept_(s) {}
-    void restore(Stepper& s) const { s = kept_; }
-
-private:
-    Stepper kept_;
-};
-template <class Stepper>
-class stepper_memory<Stepper, 2> {  // the stepper's memory()
+template <class Stepper, bool = has_step_memory<Stepper>::value>
+class stepper_memory {
 public:
     ODESTEP_INLINE explicit stepper_memory(const Stepper& s) : kept_(s.memory()) {}
-    void restore(Stepper& s) const { s.restore_memory(kept_); }
+    // true: the stepper is as before the step
+    bool restore(Stepper& s) const {
+        s.restore_memory(kept_);
+        return true;
+    }
 
 private:
     decltype(std::declval<const Stepper&>().memory()) kept_;
 };
 template <class Stepper>
-class stepper_memory<Stepper, 0> {
+class stepper_memory<Stepper, false> {
 public:
     ODESTEP_INLINE explicit constexpr stepper_memory(const Stepper&) noexcept {}
-    constexpr void restore(Stepper&) const noexcept {}
+    constexpr bool restore(Stepper&) const noexcept { return false; }
 };
 
 // The event loop's state and its one step with events; integrate with events and event_stepper both use it.
@@ -226,11 +221,7 @@ public:
         bool at_start = false;
         const step_outcome<T> o = scan(stepper, f, set, y, start, g_end, t_s, h, t_end, sink, at_start);
         if (o.code != status::ok) {
-            if (at_start) {
-                before.restore(stepper);
-            } else {
-                reset_if_any(stepper);
-            }
+            if (!(at_start && before.restore(stepper))) reset_if_any(stepper);
         }
         return o;
     }

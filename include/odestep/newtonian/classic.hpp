@@ -156,6 +156,11 @@ public:
 
     /// Forgets the history: the next step starts afresh (call it after changing x or v yourself).
     constexpr void reset() noexcept { next_.clear(); }
+    /// What a step changes (the whole stepper: its history and where the next step must start), to hand back
+    /// to restore_memory() and undo a step (the event engine does, when it rolls a step back to its start).
+    constexpr half_step memory() const noexcept { return *this; }
+    /// Puts back the memory() kept before the last step (the caller puts x and v back too).
+    constexpr void restore_memory(const half_step& m) noexcept { *this = m; }
 
     /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
@@ -202,6 +207,11 @@ public:
 
     /// Forgets the history: the next step starts afresh (call it after changing x or v yourself).
     constexpr void reset() noexcept { next_.clear(); }
+    /// What a step changes (the whole stepper: its history and where the next step must start), to hand back
+    /// to restore_memory() and undo a step (the event engine does, when it rolls a step back to its start).
+    constexpr leapfrog_position_form memory() const noexcept { return *this; }
+    /// Puts back the memory() kept before the last step (the caller puts x and v back too).
+    constexpr void restore_memory(const leapfrog_position_form& m) noexcept { *this = m; }
 
     /// (x, v) <- (x, v)(t + dt). On any status but ok, x and v are left exactly as they were.
     template <class Accel>
@@ -273,6 +283,11 @@ public:
 
     /// Forgets the history: the next step starts afresh (call it after changing x or v yourself).
     constexpr void reset() noexcept { next_.clear(); }
+    /// What a step changes (the whole stepper: its history and where the next step must start), to hand back
+    /// to restore_memory() and undo a step (the event engine does, when it rolls a step back to its start).
+    constexpr beeman memory() const noexcept { return *this; }
+    /// Puts back the memory() kept before the last step (the caller puts x and v back too).
+    constexpr void restore_memory(const beeman& m) noexcept { *this = m; }
 
     /// (x, v) <- (x, v)(t + dt), the history kept and checked by the stepper. On status::non_finite x and v
     /// are left exactly as they were.
@@ -355,6 +370,11 @@ public:
 
     /// Forgets the history: the next step starts afresh (call it after changing x or v yourself).
     constexpr void reset() noexcept { next_.clear(); }
+    /// What a step changes (the whole stepper: its history and where the next step must start), to hand back
+    /// to restore_memory() and undo a step (the event engine does, when it rolls a step back to its start).
+    constexpr predictor_corrector memory() const noexcept { return *this; }
+    /// Puts back the memory() kept before the last step (the caller puts x and v back too).
+    constexpr void restore_memory(const predictor_corrector& m) noexcept { *this = m; }
 
     /// Corrector iterations the last successful step needed.
     constexpr int last_iterations() const noexcept { return iterations_; }

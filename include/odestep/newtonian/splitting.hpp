@@ -221,6 +221,12 @@ public:
     constexpr void reset() noexcept {
         if constexpr (fsal) cache_.next.clear();
     }
+    /// What a step changes (the kept acceleration and where it belongs; nothing for a table that keeps
+    /// nothing), to hand back to restore_memory() and undo a step (the event engine does, when it rolls a step
+    /// back to its start).
+    constexpr splitting memory() const noexcept { return *this; }
+    /// Puts back the memory() kept before the last step (the caller puts x and v back too).
+    constexpr void restore_memory(const splitting& m) noexcept { *this = m; }
 
 private:
     detail::splitting_cache<State, fsal> cache_{};
