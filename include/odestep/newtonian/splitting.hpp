@@ -135,21 +135,25 @@ private:
     static constexpr bool ends_with_kick = plan::is_kick(plan::last);
     // The first update is a kick that evaluates the force (not a kept acceleration): see advance.
     static constexpr bool lazy_velocity = plan::is_kick(plan::first) && !fsal;
+    // A state that fits in registers (32 bytes: one AVX register, eight of Cortex-M4F's single-precision
+    // registers; and up to 8 components where the build optimizes for size). Its step is worked in locals,
+    // v copied into its local first, and the updates one loop each: the compiler keeps them in registers
+    // and stores each result once. A larger state's step copies nothing it need not (see in_place,
+    // copy_velocity, fused_drift_after): there the copies are passes over memory. (Small, the large form
+    // cost more: in place, each store to x or v, which may be the same memory for all the compiler knows,
+    // made it reload the other, x86-64 GCC 12 -O2 velocity Verlet N = 2 29 instructions against 20,
+    // Cortex-M4F -Os 28 bytes more; v read from the caller, Kepler's stepper-kept step 3 more.)
+    static constexpr bool small_state = sizeof(State) <= 32 || (detail::optimizing_for_size && N <= 8);
     // Unchecked, a large state is updated in place: x, v and the kept acceleration themselves, no locals
-    // and no copies at the end. A small one, which fits in registers (32 bytes: one AVX register, eight of
-    // Cortex-M4F's single-precision registers; and up to 8 components where the build optimizes for size),
-    // is worked in locals as the checked step's is and stored once: in place, every store to x or v, which
-    // may be the same memory for all the compiler knows, makes it reload the other (x86-64 GCC 12 -O2,
-    // velocity Verlet N = 2: 29 instructions a step against 20; Cortex-M4F -Os: 28 bytes more).
-    static constexpr bool in_place =
-        !checks_finiteness && !(sizeof(State) <= 32 || (detail::optimizing_for_size && N <= 8));
+    // and no copies at the end.
+    static constexpr bool in_place = !checks_finiteness && !small_state;
     // The drifts and kicks as loops written in the step (checked: into locals, which alias nothing; and
     // optimizing for size, where GCC vectorizes nothing and would keep add_scaled a call), or through
     // add_scaled, which says that x, v and the acceleration are distinct.
     static constexpr bool plain_loops = !in_place || detail::optimizing_for_size;
-    // A checked step copies v into its local before the first update (see advance): only optimizing for
-    // size, and not with lazy_velocity.
-    static constexpr bool copy_velocity = !in_place && !lazy_velocity && detail::optimizing_for_size;
+    // v is copied into its local before the first update (see advance): a small state's, and a large one's
+    // where the build optimizes for size; not with lazy_velocity.
+    static constexpr bool copy_velocity = !in_place && !lazy_velocity && (small_state || detail::optimizing_for_size);
 
 public:
     /// The order of the global error (trait; see odestep::stepper_defaults).
@@ -343,9 +347,10 @@ private:
 
     // The kept first kick (a first-same-as-last step with the acceleration kept) and the drift right after
     // it, made in one pass over the components as a hand-written kick-drift loop is (no evaluation of the
-    // force comes between them): update K + 1 is then made here and emits nothing itself.
+    // force comes between them): update K + 1 is then made here and emits nothing itself. A large state's,
+    // not optimizing for size.
     static constexpr bool fused_drift_after(std::size_t k) noexcept {
-        return !detail::optimizing_for_size && fsal && k == plan::first && k + 1 < plan::updates &&
+        return !small_state && !detail::optimizing_for_size && fsal && k == plan::first && k + 1 < plan::updates &&
                !plan::is_kick(k + 1) && plan::coefficient(k + 1) != T(0);
     }
     // wv = pv + h acc, then wx = x + h' wv (h' the drift's c dt), component by component; x is the caller's
