@@ -311,6 +311,59 @@ status cover_interval(Engine& engine, System& f, State& y, T t, T dt, std::size_
 }
 }  // namespace detail
 
+namespace detail {
+/// The substep forms' one body (odestep::adaptive_substeps, odestep::stiff_substeps): an error-controlled
+/// `Engine` behind the fixed-step stepper interface, each step covering one grid interval with at most a
+/// run-time cap (1 .. Max) of attempts (cover_interval). The forms add their traits and name the cap.
+template <class Engine, std::size_t Max>
+class interval_cover : public stepper_defaults<typename Engine::state_type> {
+    static_assert(Max >= 1, "odestep: a substep form needs room for at least one attempt per interval");
+    using State = typename Engine::state_type;
+    using T = value_type_t<State>;
+
+public:
+    /// invalid_tolerance, invalid_setting (a controller setting, or a cap outside [1, Max]), or ok.
+    /// The driving loops ask it before anything is observed or evaluated.
+    status settings_status() const noexcept {
+        const status s = engine_.settings_status();
+        if (s != status::ok) return s;
+        return cap_ >= 1 && cap_ <= Max ? status::ok : status::invalid_setting;
+    }
+    /// The engine: its tolerances, controller, step size and counts.
+    Engine& engine() noexcept { return engine_; }
+    /// The engine, read only.
+    const Engine& engine() const noexcept { return engine_; }
+
+    /// y <- y(t + dt) to the tolerances, in as many internal steps as needed. On any status but ok y is
+    /// the state it was given: invalid_tolerance / invalid_setting (bad settings), invalid_time (t or
+    /// t + dt not finite), invalid_step (dt zero or not finite), non_finite, singular_matrix (a stiff
+    /// engine's), step_too_small, substep_limit (the cap).
+    template <class System>
+    [[nodiscard]] status step(System&& f, State& y, T t, T dt) {
+        const status s = preflight(*this, t, dt);
+        if (s != status::ok) return s;
+        return cover_interval(engine_, f, y, t, dt, cap_);
+    }
+
+protected:
+    /// The engine's defaults and the cap Max.
+    interval_cover() noexcept = default;
+    /// The engine made from `engine_args`, and the cap (both checked before any use).
+    template <class... EngineArgs>
+    explicit interval_cover(std::size_t cap, const EngineArgs&... engine_args) noexcept
+        : engine_(engine_args...), cap_(cap) {}
+    /// Sets the cap: status::invalid_setting (nothing changed) outside [1, Max].
+    status set_cap(std::size_t n) noexcept {
+        if (n < 1 || n > Max) return status::invalid_setting;
+        cap_ = n;
+        return status::ok;
+    }
+
+    Engine engine_{};        ///< the error-controlled engine
+    std::size_t cap_ = Max;  ///< attempts per interval, at most
+};
+}  // namespace detail
+
 /// \brief The course's adaptive solver: a stepper that looks like a fixed-step one.
 ///
 /// `step(f, y, t, dt)` covers one interval of the caller's grid, [t, t + dt], with as many error-controlled
@@ -329,8 +382,8 @@ status cover_interval(Engine& engine, System& f, State& y, T t, T dt, std::size_
 ///         odestep::tolerances<state>::uniform(1e-8, 1e-8));
 ///     auto r = odestep::integrate(s, f, y, 0.0, 10.0, 0.1, observer);  // observer sees t = 0, 0.1, ...
 template <class Method, class State, std::size_t MaxSubsteps = 256>
-class adaptive_substeps : public stepper_defaults<State> {
-    static_assert(MaxSubsteps >= 1, "odestep: adaptive_substeps needs room for at least one internal step");
+class adaptive_substeps : public detail::interval_cover<adaptive_rk<Method, State>, MaxSubsteps> {
+    using base = detail::interval_cover<adaptive_rk<Method, State>, MaxSubsteps>;
 
 public:
     using state_type = State;                        ///< the state, std::array<T, N>
@@ -358,42 +411,13 @@ public:
     /// The given tolerances, controller settings and cap (all checked before any use).
     explicit adaptive_substeps(const tolerances<State>& tol, const step_control<T>& control = {},
                                std::size_t max_substeps = MaxSubsteps) noexcept
-        : engine_(tol, control), max_substeps_(max_substeps) {}
+        : base(max_substeps, tol, control) {}
 
-    /// invalid_tolerance, invalid_setting (a controller setting, or a cap outside [1, MaxSubsteps]), or ok.
-    /// The driving loops ask it before anything is observed or evaluated.
-    status settings_status() const noexcept {
-        const status s = engine_.settings_status();
-        if (s != status::ok) return s;
-        return max_substeps_ >= 1 && max_substeps_ <= MaxSubsteps ? status::ok : status::invalid_setting;
-    }
     /// The cap on attempts per interval.
-    std::size_t max_substeps() const noexcept { return max_substeps_; }
+    std::size_t max_substeps() const noexcept { return this->cap_; }
     /// Sets the cap on attempts per interval: status::invalid_setting (nothing changed) outside
     /// [1, MaxSubsteps].
-    status set_max_substeps(std::size_t n) noexcept {
-        if (n < 1 || n > MaxSubsteps) return status::invalid_setting;
-        max_substeps_ = n;
-        return status::ok;
-    }
-    /// The engine: its tolerances, controller, step size and counts.
-    engine_type& engine() noexcept { return engine_; }
-    /// The engine, read only.
-    const engine_type& engine() const noexcept { return engine_; }
-
-    /// y <- y(t + dt) to the tolerances, in as many internal steps as needed. On any status but ok y is
-    /// the state it was given: invalid_tolerance / invalid_setting (bad settings), invalid_time (t or
-    /// t + dt not finite), invalid_step (dt zero or not finite), non_finite, step_too_small, substep_limit.
-    template <class System>
-    [[nodiscard]] status step(System&& f, State& y, T t, T dt) {
-        const status s = detail::preflight(*this, t, dt);
-        if (s != status::ok) return s;
-        return detail::cover_interval(engine_, f, y, t, dt, max_substeps_);
-    }
-
-private:
-    engine_type engine_{};
-    std::size_t max_substeps_ = MaxSubsteps;
+    status set_max_substeps(std::size_t n) noexcept { return this->set_cap(n); }
 };
 
 /// The course's Cash-Karp 5(4) adaptive solver (its default) on State.

@@ -172,21 +172,8 @@ public:
         tolerance_changed();
     }
 
-    /// Forgets everything carried (step size, Jacobian, factorizations, polynomial, controller memory): the
-    /// next call starts afresh. The counts stay.
-    void restart() noexcept {
-        ctl_.h = T(0);
-        point_valid_ = false;
-    }
-
-    /// Jacobian evaluations since construction.
-    step_count jacobian_evaluations() const noexcept { return jacobians_; }
-    /// Decompositions since construction, each one real (E1) and one complex (E2) LU factorization.
-    step_count decompositions() const noexcept { return decompositions_; }
     /// LU factorizations since construction: two per decomposition (odestep::counts, as SciPy's nlu).
     step_count factorizations() const noexcept { return 2 * decompositions_; }
-    /// Newton iterations since construction (each: 3 evaluations of f, one real and one complex solve).
-    step_count newton_iterations() const noexcept { return iterations_; }
 
     /// One attempted step from (t, y) toward t_end, never past it; the step lands exactly on t_end when the
     /// step size reaches it (or within 1% of it, if that stays within max_step). Accepted (`accepted` true):
@@ -213,30 +200,11 @@ public:
         const detail::step_plan<T> p = detail::plan_step(control_, mag, rem);
         const bool last = p.last;
         mag = p.mag;
-        T h = last ? span : dir * mag;
-        if (!last && ctl_.keep_lu && lu_valid_ && h_lu_ * dir > T(0)) {
-            // radau5.f: a step 1 to 1.2 times the factored one, with Newton fast, keeps the factorization.
-            const T qt = mag / detail::abs_value(h_lu_);
-            if (qt >= T(1) && qt <= T(6) / T(5) && detail::abs_value(h_lu_) < rem) h = h_lu_;
-        }
+        const T h = ctl_.factored_step(last ? span : dir * mag, mag, rem, dir, last, lu_valid_, h_lu_);
         if (!last && detail::unresolved_step(h, t)) return status::step_too_small;
 
-        if (ctl_.need_jacobian) {
-            ++jacobians_;
-            s = detail::jacobian_of(f, t, y, f0_, jac_);
-            if (s != status::ok) return s;
-            if (!linalg::detail::all_entries_finite(jac_)) return status::singular_matrix;
-            ctl_.need_jacobian = false;
-            ctl_.jacobian_fresh = true;
-            lu_valid_ = false;
-        }
-        if (!lu_valid_ || !(h == h_lu_)) {
-            ++decompositions_;
-            if (!factor(h)) {
-                lu_valid_ = false;
-                return ctl_.retry_smaller(h, status::singular_matrix, max_failures_in_a_row);
-            }
-        }
+        s = this->prepare_matrices(f, t, y, f0_, h, [&](T step) { return factor(step); });
+        if (s != status::ok || !lu_valid_) return s;
 
         // Starting values: the last step's collocation polynomial at the new nodes (radau5.f), or zero.
         std::array<State, 3> z;
@@ -450,32 +418,25 @@ private:
         fnewt_ = detail::newton_kappa(smallest);
     }
 
-    using settings::control_;
-    using settings::ctl_;
-    using settings::theta_keep_;
-    using settings::tol_;
+    // What newton_engine_settings keeps for every Newton-based engine.
+    using settings::control_, settings::ctl_, settings::tol_, settings::theta_keep_, settings::jac_, settings::h_lu_,
+        settings::lu_valid_, settings::point_valid_, settings::jacobians_, settings::decompositions_,
+        settings::iterations_;
     tolerances<State> newton_tol_{};
     T fnewt_ = T(3) / T(100);
 
-    T h_lu_ = T(0);   // the signed h of the factorization
     T h_old_ = T(1);  // the signed h of the last accepted step (its polynomial)
     T faccon_ = T(1);
     T t_point_ = T(0);
     State y_point_{};
     State f0_{};
-    jacobian_t<State> jac_{};
     linalg::matrix<T, N> e1_{};
     linalg::pivots<N> piv1_{};
     linalg::complex_matrix<T, N> e2_{};
     linalg::pivots<N> piv2_{};
     std::array<State, 3> q_{};
-    bool point_valid_ = false;
     bool f0_valid_ = false;
-    bool lu_valid_ = false;
     bool polynomial_valid_ = false;
-    step_count jacobians_ = 0;
-    step_count decompositions_ = 0;
-    step_count iterations_ = 0;
 };
 
 }  // namespace odestep

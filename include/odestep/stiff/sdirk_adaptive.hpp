@@ -134,20 +134,8 @@ public:
         tolerance_changed();
     }
 
-    /// Forgets everything carried (step size, Jacobian, factorization, controller memory). The counts stay.
-    void restart() noexcept {
-        ctl_.h = T(0);
-        point_valid_ = false;
-    }
-
-    /// Jacobian evaluations since construction.
-    step_count jacobian_evaluations() const noexcept { return jacobians_; }
-    /// LU factorizations of E since construction.
-    step_count decompositions() const noexcept { return decompositions_; }
     /// LU factorizations since construction, as odestep::counts reports them (one per decomposition of E).
     step_count factorizations() const noexcept { return decompositions_; }
-    /// Newton iterations since construction (each: one evaluation of f, one solve).
-    step_count newton_iterations() const noexcept { return iterations_; }
 
     /// One attempted step from (t, y) toward t_end, never past it, landing exactly on t_end when the step
     /// size reaches it (or within 1% of it, if that stays within max_step). Accepted: y and t advance and
@@ -174,38 +162,19 @@ public:
         const detail::step_plan<T> p = detail::plan_step(control_, mag, rem);
         const bool last = p.last;
         mag = p.mag;
-        T h = last ? span : dir * mag;
-        if (!last && ctl_.keep_lu && lu_valid_ && h_lu_ * dir > T(0)) {
-            // as radau5: a step 1 to 1.2 times the factored one, with Newton fast, keeps the factorization
-            const T qt = mag / detail::abs_value(h_lu_);
-            if (qt >= T(1) && qt <= T(6) / T(5) && detail::abs_value(h_lu_) < rem) h = h_lu_;
-        }
+        const T h = ctl_.factored_step(last ? span : dir * mag, mag, rem, dir, last, lu_valid_, h_lu_);
         if (!last && detail::unresolved_step(h, t)) return status::step_too_small;
 
-        if (ctl_.need_jacobian) {
-            if constexpr (jacobian_rhs_evals_v<System, State> != 0) {
-                // differences need f(t, y) itself, not the previous step's stage slope
-                if (!slope_exact_) {
-                    detail::evaluate(f, t, y, slope_);
-                    if (!detail::all_finite(slope_)) return status::non_finite;
-                    slope_exact_ = true;
-                }
-            }
-            ++jacobians_;
-            s = detail::jacobian_of(f, t, y, slope_, jac_);
-            if (s != status::ok) return s;
-            if (!linalg::detail::all_entries_finite(jac_)) return status::singular_matrix;
-            ctl_.need_jacobian = false;
-            ctl_.jacobian_fresh = true;
-            lu_valid_ = false;
-        }
-        if (!lu_valid_ || !(h == h_lu_)) {
-            ++decompositions_;
-            if (!factor(h)) {
-                lu_valid_ = false;
-                return ctl_.retry_smaller(h, status::singular_matrix, max_failures_in_a_row);
+        if constexpr (jacobian_rhs_evals_v<System, State> != 0) {
+            // differences need f(t, y) itself, not the previous step's stage slope
+            if (ctl_.need_jacobian && !slope_exact_) {
+                detail::evaluate(f, t, y, slope_);
+                if (!detail::all_finite(slope_)) return status::non_finite;
+                slope_exact_ = true;
             }
         }
+        s = this->prepare_matrices(f, t, y, slope_, h, [&](T step) { return factor(step); });
+        if (s != status::ok || !lu_valid_) return s;
 
         // The stages, one simplified Newton solve each with E = (1 / (h gamma)) I - J.
         const T hg = h * gamma;
@@ -339,13 +308,12 @@ private:
         fnewt_ = detail::newton_kappa(smallest);
     }
 
-    using settings::control_;
-    using settings::ctl_;
-    using settings::theta_keep_;
-    using settings::tol_;
+    // What newton_engine_settings keeps for every Newton-based engine.
+    using settings::control_, settings::ctl_, settings::tol_, settings::theta_keep_, settings::jac_, settings::h_lu_,
+        settings::lu_valid_, settings::point_valid_, settings::jacobians_, settings::decompositions_,
+        settings::iterations_;
     T fnewt_ = T(3) / T(100);
 
-    T h_lu_ = T(0);
     T faccon_ = T(1);
     T t_point_ = T(0);
     State y_point_{};
@@ -354,15 +322,9 @@ private:
     State slope_prev_{};
     T h_prev_ = T(1);
     bool previous_valid_ = false;
-    jacobian_t<State> jac_{};
     linalg::matrix<T, N> e_{};
     linalg::pivots<N> piv_{};
-    bool point_valid_ = false;
     bool slope_exact_ = false;
-    bool lu_valid_ = false;
-    step_count jacobians_ = 0;
-    step_count decompositions_ = 0;
-    step_count iterations_ = 0;
 };
 
 }  // namespace odestep

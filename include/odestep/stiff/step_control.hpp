@@ -12,6 +12,8 @@
 #include "../adaptive/control.hpp"
 #include "../detail/grid_clock.hpp"
 #include "../detail/ops.hpp"
+#include "../linalg/jacobian.hpp"
+#include "../linalg/lu.hpp"
 #include "../status.hpp"
 
 namespace odestep::detail {
@@ -38,6 +40,14 @@ struct stiff_step_control : step_memory<T> {
         this->rejected_last = false;
         have_accepted = false;
         this->failures = 0;
+    }
+    /// The step to try: `planned` (of size mag, in direction dir, `last` when it lands on the end of the rest
+    /// rem), or, as radau5.f does, the factored step h_lu when Newton was fast (keep_lu), its factorization
+    /// is still valid and mag is 1 to 1.2 times |h_lu| (a step short of the end): the factorization is kept.
+    T factored_step(T planned, T mag, T rem, T dir, bool last, bool lu_valid, T h_lu) const noexcept {
+        if (last || !keep_lu || !lu_valid || !(h_lu * dir > T(0))) return planned;
+        const T qt = mag / abs_value(h_lu);
+        return qt >= T(1) && qt <= T(6) / T(5) && abs_value(h_lu) < rem ? h_lu : planned;
     }
     /// A rejected attempt of size h: the next one is |h| factor, with a fresh Jacobian unless this one was.
     status reject(T step, T factor) noexcept {
@@ -133,12 +143,61 @@ public:
     /// Sets the rate of jacobian_reuse_rate() (checked by the next call).
     void set_jacobian_reuse_rate(T theta) noexcept { theta_keep_ = theta; }
 
+    /// Forgets everything carried (step size, Jacobian, factorizations, what the engine keeps of its last
+    /// step, controller memory): the next call starts afresh. The counts stay.
+    void restart() noexcept {
+        this->ctl_.h = T(0);
+        point_valid_ = false;
+    }
+    /// Jacobian evaluations since construction.
+    step_count jacobian_evaluations() const noexcept { return jacobians_; }
+    /// Decompositions of the iteration matrix since construction (Radau: one real E1 and one complex E2 LU
+    /// factorization each; SDIRK: one LU factorization of E).
+    step_count decompositions() const noexcept { return decompositions_; }
+    /// Newton iterations since construction (Radau: each 3 evaluations of f, one real and one complex solve;
+    /// SDIRK: one evaluation of f and one solve).
+    step_count newton_iterations() const noexcept { return iterations_; }
+
 protected:
     /// The given tolerances and controller settings (checked by settings_status() before any use).
     newton_engine_settings(const tolerances<State>& tol, const step_control<T>& control) noexcept
         : base(tol, control) {}
 
-    T theta_keep_ = T(1) / T(10);  ///< radau5.f's THET: Newton's rate below which the Jacobian is kept
+    /// Before an attempt of step h from (t, y): the Jacobian at (t, y) (from slope = f(t, y)) when the
+    /// controller asks for one, then the iteration matrix factored for h by `factor(h)` (the engine's: it
+    /// sets h_lu_ and lu_valid_ on success) unless the factorization of h is kept. The attempt goes on when
+    /// this returns ok with lu_valid_; otherwise it ends with the status returned: the Jacobian's failure,
+    /// or after a singular matrix radau5.f's unexpected rejection (h halved; singular_matrix after
+    /// max_failures_in_a_row of them).
+    template <class System, class Factor>
+    status prepare_matrices(System& f, T t, const State& y, const State& slope, T h, Factor&& factor) {
+        if (this->ctl_.need_jacobian) {
+            ++jacobians_;
+            const status s = detail::jacobian_of(f, t, y, slope, jac_);
+            if (s != status::ok) return s;
+            if (!linalg::detail::all_entries_finite(jac_)) return status::singular_matrix;
+            this->ctl_.need_jacobian = false;
+            this->ctl_.jacobian_fresh = true;
+            lu_valid_ = false;
+        }
+        if (!lu_valid_ || !(h == h_lu_)) {
+            ++decompositions_;
+            if (!factor(h)) {
+                lu_valid_ = false;
+                return this->ctl_.retry_smaller(h, status::singular_matrix, Engine::max_failures_in_a_row);
+            }
+        }
+        return status::ok;
+    }
+
+    T theta_keep_ = T(1) / T(10);    ///< radau5.f's THET: Newton's rate below which the Jacobian is kept
+    jacobian_t<State> jac_{};        ///< the Jacobian at the point of its last evaluation
+    T h_lu_ = T(0);                  ///< the signed h of the factorization
+    bool lu_valid_ = false;          ///< the iteration matrix is factored for h_lu_
+    bool point_valid_ = false;       ///< the engine's kept point (f there, ...) is the current one
+    step_count jacobians_ = 0;       ///< Jacobian evaluations
+    step_count decompositions_ = 0;  ///< decompositions of the iteration matrix
+    step_count iterations_ = 0;      ///< Newton iterations
 };
 
 }  // namespace odestep

@@ -41,8 +41,8 @@ namespace odestep {
 ///     odestep::radau5_substeps<state> s(odestep::tolerances<state>::uniform(1e-6, 1e-10));
 ///     auto r = odestep::integrate(s, odestep::with_jacobian(f, J), y, 0.0, 40.0, 0.1);
 template <class Engine, std::size_t MaxAttempts = 1000>
-class stiff_substeps : public stepper_defaults<typename Engine::state_type> {
-    static_assert(MaxAttempts >= 1, "odestep: stiff_substeps needs room for at least one attempt");
+class stiff_substeps : public detail::interval_cover<Engine, MaxAttempts> {
+    using base = detail::interval_cover<Engine, MaxAttempts>;
     using State = typename Engine::state_type;
 
 public:
@@ -73,45 +73,17 @@ public:
     stiff_substeps() noexcept = default;
     /// The given tolerances and cap, the engine's default controller (all checked before any use).
     explicit stiff_substeps(const tolerances<State>& tol, std::size_t max_attempts = MaxAttempts) noexcept
-        : engine_(tol), max_attempts_(max_attempts) {}
+        : base(max_attempts, tol) {}
     /// The given tolerances, controller settings and cap (all checked before any use).
     stiff_substeps(const tolerances<State>& tol, const step_control<T>& control,
                    std::size_t max_attempts = MaxAttempts) noexcept
-        : engine_(tol, control), max_attempts_(max_attempts) {}
+        : base(max_attempts, tol, control) {}
 
-    /// invalid_tolerance, invalid_setting (a controller setting, or a cap outside [1, MaxAttempts]), or ok.
-    status settings_status() const noexcept {
-        const status s = engine_.settings_status();
-        if (s != status::ok) return s;
-        return max_attempts_ >= 1 && max_attempts_ <= MaxAttempts ? status::ok : status::invalid_setting;
-    }
     /// The cap on attempts per interval.
-    std::size_t max_attempts() const noexcept { return max_attempts_; }
+    std::size_t max_attempts() const noexcept { return this->cap_; }
     /// Sets the cap on attempts per interval: status::invalid_setting (nothing changed) outside
     /// [1, MaxAttempts].
-    status set_max_attempts(std::size_t n) noexcept {
-        if (n < 1 || n > MaxAttempts) return status::invalid_setting;
-        max_attempts_ = n;
-        return status::ok;
-    }
-    /// The engine: tolerances, controller, step size, counts.
-    engine_type& engine() noexcept { return engine_; }
-    /// The engine, read only.
-    const engine_type& engine() const noexcept { return engine_; }
-
-    /// y <- y(t + dt) to the tolerances. On any status but ok y is the state it was given:
-    /// invalid_tolerance / invalid_setting, invalid_time (t or t + dt not finite), invalid_step (dt zero or
-    /// not finite), non_finite, singular_matrix, step_too_small, substep_limit (the attempt cap).
-    template <class System>
-    [[nodiscard]] status step(System&& f, State& y, T t, T dt) {
-        const status s = detail::preflight(*this, t, dt);
-        if (s != status::ok) return s;
-        return detail::cover_interval(engine_, f, y, t, dt, max_attempts_);
-    }
-
-private:
-    engine_type engine_{};
-    std::size_t max_attempts_ = MaxAttempts;
+    status set_max_attempts(std::size_t n) noexcept { return this->set_cap(n); }
 };
 
 /// Radau 5(4) (odestep::radau5) one grid interval per step: the first choice for stiff problems.
