@@ -370,13 +370,18 @@ struct exact_ops {
     static S& object(void* storage) noexcept { return *std::launder(static_cast<S*>(storage)); }
     static void construct(void* storage) noexcept { ::new (storage) S(); }
 
-    // One copy of N scalars each way (a constant size: a few moves, at -Os too, where a loop was kept).
+    // One copy of N scalars each way, unrolled as the step's own loops over N are (a loop at -Os: Cortex-M4F,
+    // RK4 on 4 floats, about 20 instructions more a step).
     ODESTEP_INLINE static A load(const T* from) noexcept {
         A s;
-        std::memcpy(s.data(), from, sizeof(T) * N);
+        ODESTEP_STEP_UNROLL_ALWAYS
+        for (std::size_t i = 0; i < N; ++i) s[i] = from[i];
         return s;
     }
-    ODESTEP_INLINE static void store(T* to, const A& s) noexcept { std::memcpy(to, s.data(), sizeof(T) * N); }
+    ODESTEP_INLINE static void store(T* to, const A& s) noexcept {
+        ODESTEP_STEP_UNROLL_ALWAYS
+        for (std::size_t i = 0; i < N; ++i) to[i] = s[i];
+    }
 
     static odestep_status step(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y, T t, T dt) {
         return to_c(run<false>(object_of<T>(s), sys, y, t, dt, nullptr, nullptr));
@@ -571,26 +576,17 @@ template <class T>
     return e1 == nullptr ? b.step(s, sys, y, t, dt) : b.form->step_error(s, sys, y, t, dt, e1, e2);
 }
 
-/// step_unbound without estimates: its arguments all in registers where the arguments of step_unbound are
-/// not (AAPCS: four integer registers), so that the plain step's entry reaches it by a tail call and needs
-/// no stack frame of its own (Cortex-M4F, -Os: a frame and a push of eight registers on every step).
+/// A single step of y' = f with every test of the header in order, each failure its status: the pointers, the
+/// binding (else step_unbound checks the method and n and binds), t and dt, the estimates asked for. Out of
+/// line: the estimating step's entry, and where the plain step's fast path (step) fails a test.
 template <class T>
-[[gnu::noinline, gnu::cold]] odestep_status step_unbound_plain(stepper_t<T>* s, const typename c_types<T>::system* sys,
-                                                               T* y, T t, T dt) {
-    return step_unbound<T>(s, sys, y, t, dt, nullptr, nullptr);
-}
-
-/// A single step of y' = f. The stepper bound to this n and kind (one compare) had the method and n
-/// checked when it was bound; the rest is the checks of the step's arguments and a tail call.
-template <class T>
-ODESTEP_INLINE odestep_status step(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1,
-                                   T* e2) {
+[[gnu::noinline]] odestep_status step_checked(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y, T t, T dt,
+                                              T* e1, T* e2) {
     if (ODESTEP_UNLIKELY(s == nullptr || sys == nullptr || sys->f == nullptr || y == nullptr))
         return ODESTEP_INVALID_SETTING;
     const binding<T>& b = binding_of<T>(s);
     const std::size_t n = sys->n;
     if (ODESTEP_UNLIKELY(b.first_order_n != n || n == 0)) {
-        if (e1 == nullptr) return step_unbound_plain<T>(s, sys, y, t, dt);
         return step_unbound<T>(s, sys, y, t, dt, e1, e2);
     }
     const status checked = detail::check_step(t, dt);
@@ -599,6 +595,31 @@ ODESTEP_INLINE odestep_status step(stepper_t<T>* s, const typename c_types<T>::s
     const method_ops<T>* m = ops<T>(s);
     if (m->error_estimates < 1 || (e2 != nullptr && m->error_estimates < 2)) return ODESTEP_INVALID_SETTING;
     return b.form->step_error(s, sys, y, t, dt, e1, e2);
+}
+
+/// step_checked of the plain step: its arguments all in registers (AAPCS: four integer ones, which
+/// step_checked's seven do not fit), so that step reaches it with them untouched, by a tail call.
+template <class T>
+[[gnu::noinline]] static odestep_status step_checked_plain(stepper_t<T>* s, const typename c_types<T>::system* sys,
+                                                           T* y, T t, T dt) {
+    return step_checked<T>(s, sys, y, t, dt, nullptr, nullptr);
+}
+
+/// A single step of y' = f. The plain step's fast path is one test of everything: the pointers not null, n
+/// the bound one (whose method and n were checked when it was bound) and t and dt good; then a tail call of
+/// the bound step. Any test failing, step_checked_plain, also a tail call with the same arguments, finds
+/// the status: the fast path needs no registers saved and no stack frame (Cortex-M4F: the status of each
+/// test in the fast path took a frame and a push of six registers on every step).
+template <class T>
+ODESTEP_INLINE odestep_status step(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1,
+                                   T* e2) {
+    if (e1 != nullptr) return step_checked<T>(s, sys, y, t, dt, e1, e2);
+    if (s != nullptr && sys != nullptr && sys->f != nullptr && y != nullptr) {
+        const binding<T>& b = binding_of<T>(s);
+        const std::size_t n = sys->n;
+        if (b.first_order_n == n && n != 0 && detail::check_step(t, dt) == status::ok) return b.step(s, sys, y, t, dt);
+    }
+    return step_checked_plain<T>(s, sys, y, t, dt);
 }
 
 /// step_unbound for x'' = a.
@@ -615,30 +636,43 @@ template <class T>
     return acc == nullptr ? b.step_newton(s, sys, x, v, t, dt) : b.form->step_newton_kept(s, sys, x, v, acc, t, dt);
 }
 
-/// step_newton_unbound without a kept acceleration (see step_unbound_plain).
+/// step_checked for x'' = a (acc not null: the caller-kept step).
 template <class T>
-[[gnu::noinline, gnu::cold]] odestep_status step_newton_unbound_plain(stepper_t<T>* s,
-                                                                      const typename c_types<T>::newton* sys, T* x,
-                                                                      T* v, T t, T dt) {
-    return step_newton_unbound<T>(s, sys, x, v, nullptr, t, dt);
-}
-
-/// A single step of x'' = a, as step.
-template <class T>
-ODESTEP_INLINE odestep_status step_newton(stepper_t<T>* s, const typename c_types<T>::newton* sys, T* x, T* v, T* acc,
-                                          T t, T dt) {
+[[gnu::noinline]] odestep_status step_newton_checked(stepper_t<T>* s, const typename c_types<T>::newton* sys, T* x,
+                                                     T* v, T* acc, T t, T dt) {
     if (ODESTEP_UNLIKELY(s == nullptr || sys == nullptr || sys->a == nullptr || x == nullptr || v == nullptr))
         return ODESTEP_INVALID_SETTING;
     const binding<T>& b = binding_of<T>(s);
     const std::size_t n = sys->n;
     if (ODESTEP_UNLIKELY(b.newton_n != n || n == 0)) {
-        if (acc == nullptr) return step_newton_unbound_plain<T>(s, sys, x, v, t, dt);
         return step_newton_unbound<T>(s, sys, x, v, acc, t, dt);
     }
     const status checked = detail::check_step(t, dt);
     if (ODESTEP_UNLIKELY(checked != status::ok)) return to_c(checked);
     if (acc == nullptr) return b.step_newton(s, sys, x, v, t, dt);
     return b.form->step_newton_kept(s, sys, x, v, acc, t, dt);
+}
+
+/// step_checked_plain for x'' = a.
+template <class T>
+[[gnu::noinline]] static odestep_status step_newton_checked_plain(stepper_t<T>* s,
+                                                                  const typename c_types<T>::newton* sys, T* x, T* v,
+                                                                  T t, T dt) {
+    return step_newton_checked<T>(s, sys, x, v, nullptr, t, dt);
+}
+
+/// A single step of x'' = a, as step.
+template <class T>
+ODESTEP_INLINE odestep_status step_newton(stepper_t<T>* s, const typename c_types<T>::newton* sys, T* x, T* v, T* acc,
+                                          T t, T dt) {
+    if (acc != nullptr) return step_newton_checked<T>(s, sys, x, v, acc, t, dt);
+    if (s != nullptr && sys != nullptr && sys->a != nullptr && x != nullptr && v != nullptr) {
+        const binding<T>& b = binding_of<T>(s);
+        const std::size_t n = sys->n;
+        if (b.newton_n == n && n != 0 && detail::check_step(t, dt) == status::ok)
+            return b.step_newton(s, sys, x, v, t, dt);
+    }
+    return step_newton_checked_plain<T>(s, sys, x, v, t, dt);
 }
 
 /// The stepper of the loops: the C method behind the stepper interface the C++ loops take. Its traits are
