@@ -46,17 +46,38 @@ constexpr bool matrix_finite(const sensitivity_matrix<T, R, C>& m) noexcept {
 }
 
 // to = a b (a: R x L, b: L x C). A zero a_il skips its row of b: a Jacobian's structural zeros (a
-// kinematic identity block, a banded coupling) cost one compare each instead of C multiply-adds.
+// kinematic identity block, a banded coupling) cost one compare each instead of C multiply-adds. Both loops
+// over l and over the columns are unrolled unless -Os (fully to 16: a small product is straight-line code).
 template <class T, std::size_t R, std::size_t L, std::size_t C>
 constexpr void multiply(const sensitivity_matrix<T, R, L>& a, const sensitivity_matrix<T, L, C>& b,
                         sensitivity_matrix<T, R, C>& to) noexcept {
     for (std::size_t i = 0; i < R; ++i) {
         std::array<T, C> row{};
+        ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t l = 0; l < L; ++l) {
             const T ail = a[i][l];
             if (ail == T(0)) continue;
             ODESTEP_UNROLL_UNLESS_SIZE
             for (std::size_t j = 0; j < C; ++j) row[j] += ail * b[l][j];
+        }
+        to[i] = row;
+    }
+}
+
+// to = a (I + c b) = a + (c a) b (a: R x R, b: R x R), for a stage whose Z = I + c K_j reads one stage: no
+// Z formed, no identity added. Zero a_il skipped as in multiply.
+template <class T, std::size_t R>
+constexpr void multiply_identity_plus(const sensitivity_matrix<T, R, R>& a, T c, const sensitivity_matrix<T, R, R>& b,
+                                      sensitivity_matrix<T, R, R>& to) noexcept {
+    for (std::size_t i = 0; i < R; ++i) {
+        std::array<T, R> row = a[i];
+        ODESTEP_UNROLL_UNLESS_SIZE
+        for (std::size_t l = 0; l < R; ++l) {
+            const T ail = a[i][l];
+            if (ail == T(0)) continue;
+            const T cl = c * ail;
+            ODESTEP_UNROLL_UNLESS_SIZE
+            for (std::size_t j = 0; j < R; ++j) row[j] += cl * b[l][j];
         }
         to[i] = row;
     }
@@ -173,6 +194,17 @@ struct rk_tangent_listener {
         return flags;
     }
     static constexpr std::array<bool, S> reads = reading_stages();
+    // Whether stage i reads exactly one earlier stage (then Z_i = I + dt a_ij K_j needs no Z formed).
+    static constexpr std::array<bool, S> single_reads() noexcept {
+        std::array<bool, S> flags{};
+        for (std::size_t i = 0; i < S; ++i) {
+            std::size_t n = 0;
+            for (std::size_t j = 0; j < i; ++j) n += plan::tab.a[i][j] != T(0) ? 1U : 0U;
+            flags[i] = n == 1;
+        }
+        return flags;
+    }
+    static constexpr std::array<bool, S> single = single_reads();
     // The first stage j < i with a_ij != 0 (0 for a stage that reads none: not used there).
     static constexpr std::array<std::size_t, S> first_reads() noexcept {
         std::array<std::size_t, S> first{};
@@ -193,6 +225,15 @@ struct rk_tangent_listener {
             if (!reads[i]) {
                 evaluate_jacobian(f, t, y, k[i]);  // K_i = J_i I
                 return;
+            }
+            if constexpr (!has_jacobian_times<System, T, N, M>::value) {
+                if (single[i]) {  // K_i = J_i (I + dt a_ij K_j), j = first_read[i]
+                    jacobian_t<State> jac;
+                    evaluate_jacobian(f, t, y, jac);
+                    const std::size_t j = first_read[i];
+                    multiply_identity_plus(jac, dt * plan::tab.a[i][j], k[j], k[i]);
+                    return;
+                }
             }
         }
         block z;
@@ -312,7 +353,8 @@ private:
                              const std::array<sensitivity_matrix<T, N, M>, plan::S>& k, T dt,
                              std::index_sequence<I...>) {
         const std::array<T, plan::S> w{(dt * plan::tab.b[I])...};
-        for (std::size_t r = 0; r < N; ++r)
+        for (std::size_t r = 0; r < N; ++r) {
+            ODESTEP_UNROLL_UNLESS_SIZE
             for (std::size_t c = 0; c < M; ++c) {
                 T sum = T(0);
                 (((plan::tab.b[I] != T(0)) ? void(sum += w[I] * k[I][r][c]) : void()), ...);
@@ -322,6 +364,7 @@ private:
                     d[r][c] = seed[r][c] + sum;
                 }
             }
+        }
     }
 };
 
