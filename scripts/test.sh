@@ -17,8 +17,8 @@
 #                             host-sanitize fuzz cortex-m cortex-m0 audit bench-quick perf-gate
 #
 # Installs what is missing first (scripts/install-deps.sh). Prints "===== NAME: ok (N s)" and the stage's CPU
-# time (user + sys) per stage, a table of them at the end (kept in build/test-logs/, with each stage's
-# output), and ends with the line "test: N passed, N failed".
+# time (user + sys) per stage, a table of them at the end (build/test-logs/results.txt; the full run keeps
+# each stage's output there too, NAME.log), and ends with the line "test: N passed, N failed".
 set -uo pipefail
 cd "$(dirname "$0")/.." || exit 2
 
