@@ -7,8 +7,8 @@
 #                             (build and test presets host-quick, in build/host/, which the full run reuses)
 #   scripts/test.sh           everything, what CI runs: the above and Doxygen, MISRA C, the host preset's whole
 #                             set (each header on its own, compile-fail contracts, the package consumers); the
-#                             unit, C and fuzz-replay tests under g++ C++20, clang++ C++17 (-fno-exceptions
-#                             -fno-rtti) and C++20, and ASan+UBSan; libFuzzer; the portable suite on
+#                             unit, C and fuzz-replay tests under g++ C++20, clang++ C++20, and clang++ C++17
+#                             (-fno-exceptions -fno-rtti) with ASan+UBSan; libFuzzer; the portable suite on
 #                             emulated Cortex-M cores; the firmware audit; the instruction-count checks. After
 #                             format and SPDX, its stages run in two lanes side by side, each stage's output
 #                             printed whole when it ends.
@@ -17,8 +17,8 @@
 #                             host-sanitize fuzz cortex-m cortex-m0 audit bench-quick perf-gate
 #
 # Installs what is missing first (scripts/install-deps.sh). Prints "===== NAME: ok (N s)" and the stage's CPU
-# time (user + sys) per stage, a table of them at the end (kept in build/test-logs/, with each stage's
-# output), and ends with the line "test: N passed, N failed".
+# time (user + sys) per stage, a table of them at the end (build/test-logs/results.txt; the full run keeps
+# each stage's output there too, NAME.log), and ends with the line "test: N passed, N failed".
 set -uo pipefail
 cd "$(dirname "$0")/.." || exit 2
 
@@ -108,7 +108,8 @@ stage() {  # stage NAME: one stage of the test command, by name
     misra-c) run misra-c scripts/misra_c.sh ;;
     # host: everything, the checks that a second compiler or standard would only repeat included (each header
     # on its own, the compile-fail contracts under g++ and clang++, the package consumers, the examples); the
-    # other presets: the unit, C and fuzz-replay tests (CMakePresets.json).
+    # other presets: the unit, C and fuzz-replay tests (CMakePresets.json). host-sanitize is also the
+    # clang++ C++17 -fno-exceptions -fno-rtti build (the preset host-clang, which it makes redundant).
     host | host-cxx20 | host-clang | host-clang-cxx20 | host-sanitize) run "$1" host_preset "$1" ;;
     # libFuzzer targets for the loops, the steps and the event loops; any finding fails.
     fuzz) run fuzz scripts/fuzz.sh --quick ;;
@@ -147,12 +148,18 @@ case $tier in
     # configure, the tail of a build or a ctest run, the QEMU runs, the fuzzers' longest unit, valgrind) leave
     # a core to the other lane. The host compilers in one lane; the fuzz targets, the Cortex-M builds and runs
     # and the audit in the other; about the same CPU time in each (docs/testing.md).
-    lane docs misra-c host host-cxx20 host-clang host-clang-cxx20 host-sanitize bench-quick perf-gate &
+    host_lane=(docs misra-c host host-cxx20 host-clang-cxx20 host-sanitize bench-quick perf-gate)
+    target_lane=(fuzz cortex-m cortex-m0 audit)
+    lane "${host_lane[@]}" &
     lane_host=$!
-    lane fuzz cortex-m cortex-m0 audit &
+    lane "${target_lane[@]}" &
     lane_target=$!
     wait $lane_host
     wait $lane_target
+    # A stage whose lane ended before it reported (the lane's shell killed) fails the run.
+    for name in "${host_lane[@]}" "${target_lane[@]}"; do
+      grep -q "^$name " "$results" || echo "$name FAILED 0 0" >> "$results"
+    done
     ;;
 esac
 [ $tier = stage ] || run clean-tree scripts/check_clean_tree.sh --check build/work_tree_before.txt
