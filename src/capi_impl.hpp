@@ -304,20 +304,20 @@ struct refuse {
 template <class S>
 struct padded_ops {
     using T = typename S::value_type;
-    // The padded form is the small one (the default): its plain steps call the estimating and kept ones
-    // rather than having a copy of their own.
+    // Each entry point with its own copy of the padded step: a plain step that called the estimating one
+    // took 14 instructions more (x86-64, RK4 n = 4 of 8) for 88 bytes less flash (M4F -Os).
     static odestep_status step(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y, T t, T dt) {
-        return step_error(s, sys, y, t, dt, nullptr, nullptr);
+        return to_c(run(object_of<T>(s), sys, y, t, dt, nullptr, nullptr));
     }
-    [[gnu::noinline]] static odestep_status step_error(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y,
-                                                       T t, T dt, T* e1, T* e2) {
+    static odestep_status step_error(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1,
+                                     T* e2) {
         return to_c(run(object_of<T>(s), sys, y, t, dt, e1, e2));
     }
     static odestep_status step_newton(stepper_t<T>* s, const typename c_types<T>::newton* sys, T* x, T* v, T t, T dt) {
-        return step_newton_kept(s, sys, x, v, nullptr, t, dt);
+        return to_c(run_newton(object_of<T>(s), sys, x, v, nullptr, t, dt));
     }
-    [[gnu::noinline]] static odestep_status step_newton_kept(stepper_t<T>* s, const typename c_types<T>::newton* sys,
-                                                             T* x, T* v, T* acc, T t, T dt) {
+    static odestep_status step_newton_kept(stepper_t<T>* s, const typename c_types<T>::newton* sys, T* x, T* v, T* acc,
+                                           T t, T dt) {
         return to_c(run_newton(object_of<T>(s), sys, x, v, acc, t, dt));
     }
     ODESTEP_INLINE static status run(void* object, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1,
