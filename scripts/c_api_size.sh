@@ -5,11 +5,12 @@
 # whose main calls nothing of it. Also checks that the float images hold no __aeabi_d* routine.
 # Usage: scripts/c_api_size.sh            (writes build/c_api_size/, prints a markdown table)
 #        CORES=cortex-m4f scripts/c_api_size.sh   (one core only)
+#        EXACT_STATES=8 scripts/c_api_size.sh     (the library built with ODESTEP_C_EXACT_STATES 8; default 0)
 # Needs arm-none-eabi-gcc/g++ with newlib. Installs nothing.
 set -uo pipefail
 cd "$(dirname "$0")/.." || exit 2
 root=$PWD
-out=$root/build/c_api_size
+out=$root/build/c_api_size${EXACT_STATES:+-exact$EXACT_STATES}
 mkdir -p "$out"
 board=$root/toolchains/board
 setting() { sed -n "s/^set($2 \"\{0,1\}\([^\")]*\)\"\{0,1\}).*/\1/p" "$root/toolchains/$1.cmake"; }
@@ -85,7 +86,7 @@ cases=("baseline|0|odestep_rk4_f"
        "dp54_substeps stiff step|6|odestep_dp54_substeps_f"
        "rk4 step with Phi|7|odestep_rk4_transition_f" "dp54 step with Phi|7|odestep_dp54_transition_f")
 failures=0
-echo "| core | flags | use (float, n = 4, MAX_STATES ${MAX_STATES:-8}) | flash of the C API (.text + .rodata, bytes) | __aeabi_d* |"
+echo "| core | flags | use (float, n = 4, MAX_STATES ${MAX_STATES:-8}, EXACT_STATES ${EXACT_STATES:-0}) | flash of the C API (.text + .rodata, bytes) | __aeabi_d* |"
 echo "|---|---|---|---:|---|"
 for core in ${CORES:-cortex-m4f cortex-m0plus}; do
   read -r -a cpu <<< "$(setting "$core" ODESTEP_TARGET_CPU_FLAGS)"
@@ -95,7 +96,8 @@ for core in ${CORES:-cortex-m4f cortex-m0plus}; do
     mkdir -p "$lib"
     for src in capi capi_float capi_events_float capi_stiff_float; do
       arm-none-eabi-g++ "${cpu[@]}" $opt -std=c++17 -fno-exceptions -fno-rtti -ffp-contract=off -ffunction-sections -fdata-sections \
-        -DODESTEP_C_MAX_STATES="${MAX_STATES:-8}" -I"$root/include" -c "$root/src/$src.cpp" -o "$lib/$src.o" || exit 1
+        -DODESTEP_C_MAX_STATES="${MAX_STATES:-8}" -DODESTEP_C_EXACT_STATES="${EXACT_STATES:-0}" -I"$root/include" \
+        -c "$root/src/$src.cpp" -o "$lib/$src.o" || exit 1
     done
     arm-none-eabi-g++ "${cpu[@]}" -Os -std=c++17 -fno-exceptions -fno-rtti -ffunction-sections -fdata-sections \
       -DODESTEP_BOARD_BARE=1 -c "$board/startup.cpp" -o "$lib/startup.o" &&
