@@ -8,6 +8,7 @@
 #define ODESTEP_EVENTS_FREE_RUNNING_HPP
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <type_traits>
 
@@ -331,18 +332,30 @@ struct record_flags<event_set<Finder, Events...>> {
         std::is_same_v<std::remove_cv_t<decltype(Events::action)>, record_action>...};
 };
 
+// The same state bit for bit (+0 and -0 differ): the state a run stops at is observed unless it is the
+// last one observed, time and state (a step that starts at an event can stop at an offset that rounds to
+// the event's time, with a state the event's observation was not).
+template <class State>
+bool same_bits_as(const State& a, const State& b) noexcept {
+    for (std::size_t i = 0; i < state_traits<State>::size; ++i)
+        if (!(a[i] == b[i]) || std::signbit(a[i]) != std::signbit(b[i])) return false;
+    return true;
+}
+
 // What integrate_adaptive with events observes: the start, each record firing (the event's state, as the
 // location found it), every completed step's end (a step cut at an action's event ends there, with the state the
-// action left), and the state where the run stopped unless it was the last one observed.
+// action left), and the state where the run stopped unless it was the last one observed (time and state).
 template <class Observer, class State>
 struct step_output {
     using T = value_type_t<State>;
     Observer& observe;
     T last = T(0);
+    State last_y{};
     status failure = status::ok;
     void see(T t, const State& y) {
         observe(t, y);
         last = t;
+        assign(last_y, y);
     }
     void start(T t0, const State& y) { see(t0, y); }
     template <class Replayed>
@@ -355,13 +368,13 @@ struct step_output {
     }
     template <class Replayed>
     void stopped(T t, const State& y, bool acted, Replayed&) {
-        if (acted || !(last == t)) see(t, y);
+        if (acted || !(last == t) || !same_bits_as(last_y, y)) see(t, y);
     }
 };
 
 // What integrate_times with events observes: every time of `times` (inside a step from its extension, at a
 // step's end its state), each record firing (after the times before it), and the state where the run stopped
-// (a time equal to it gets that state), unless it was the last one observed.
+// (a time equal to it gets that state), unless it was the last one observed (time and state).
 template <class Observer, class State, class Times>
 struct times_output {
     using T = value_type_t<State>;
@@ -370,11 +383,13 @@ struct times_output {
     bool forward;
     std::size_t next = 0;
     T last = T(0);
+    State last_y{};
     bool any = false;
     status failure = status::ok;
     void see(T t, const State& y) {
         observe(t, y);
         last = t;
+        assign(last_y, y);
         any = true;
     }
     bool before(T a, T b) const { return forward ? a < b : a > b; }
@@ -409,7 +424,7 @@ struct times_output {
             see(times[next++], y);
             seen = true;
         }
-        if (!seen && (acted || !any || !(last == t))) see(t, y);
+        if (!seen && (acted || !any || !(last == t) || !same_bits_as(last_y, y))) see(t, y);
     }
 };
 
