@@ -216,3 +216,43 @@ TEST_CASE("issue 24 (found by fuzz_events): a crossing whose bracket the finder'
     CHECK(r.t >= 0.0);
     CHECK(r.t <= 1e-6);  // the bracket's left end: at or before the root
 }
+
+TEST_CASE(
+    "issue 24 (found by fuzz_free_events): a crossing inside an earlier firing's wide bracket fires when "
+    "the action moved g back") {
+    // y' = 1 from 0 over one step of 2; g = y - 0.5 rising; the action subtracts 0.4 from y. In closed form g
+    // crosses at t = 0.5, 0.9, 1.3, 1.7: four firings and y(2) = 2 - 4 (0.4) = 0.4. With the finder capped at
+    // one or two iterations the first firing's bracket stays wide (it holds the second crossing); before the
+    // fix that crossing was taken for the first firing's own, and the run ended ok at y = 1.6, g = 1.1 > 0:
+    // on the wrong side, a crossing missed. Both location modes, bisection (its brackets are predictable).
+    for (const std::size_t cap : {std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{0}}) {
+        CAPTURE(cap);
+        std::size_t calls = 0;
+        auto back = [&calls](double, state1& s) {
+            s[0] -= 0.4;
+            ++calls;
+        };
+        auto g = [](double, const state1& s) { return s[0] - 0.5; };
+        const auto ev = odestep::make_event<state1>(g, odestep::direction::rising, back);
+        state1 y{0.0};
+        const auto r = odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 2.0, 2.0,
+                                          odestep::watch<odestep::bisection>(ev).with_limits({cap, 8, 0}));
+        CHECK(r.status == odestep::status::ok);
+        CHECK(calls == 4);
+        CHECK(y[0] < 0.5);  // never ok on the wrong side
+        CHECK(std::abs(y[0] - 0.4) <= 1e-12);
+        std::size_t calls_i = 0;
+        auto back_i = [&calls_i](double, state1& s) {
+            s[0] -= 0.4;
+            ++calls_i;
+        };
+        state1 z{0.0};
+        const auto ri = odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, z, 0.0, 2.0, 2.0,
+                                           odestep::watch<odestep::on_interpolant<odestep::bisection>>(
+                                               odestep::make_event<state1>(g, odestep::direction::rising, back_i))
+                                               .with_limits({cap, 8, 0}));
+        CHECK(ri.status == odestep::status::ok);
+        CHECK(calls_i == 4);
+        CHECK(std::abs(z[0] - 0.4) <= 1e-12);
+    }
+}

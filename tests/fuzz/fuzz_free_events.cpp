@@ -356,10 +356,6 @@ void run(reader& in) {
     // The missed-crossing watch: the callable event with a pure g and the default settings.
     check.watch = (g1.poison_at == 0 || !impure()) && e1.band == T(0) && e1.dead_time == T(0) && e1.max_firings == 0 &&
                   e1.tolerance == T(0);
-    // Open finding (tests/fuzz/known/fuzz_free_events/missed-crossing-wide-bracket-jump): with the root finder
-    // capped (max_iterations drawn), a crossing inside the bracket the cap left wide at an earlier firing is
-    // taken for that firing's own, though its action moved g back; the gate skips the watch then.
-    if (skip_open_findings() && limits.max_iterations != 0) check.watch = false;
     check.g = g1;
     check.record_evals = 1U + static_cast<unsigned>(odestep::detail::free_extension<Engine>::rhs_evals_to_complete);
     check.g.count = &check.own;

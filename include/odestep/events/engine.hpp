@@ -409,9 +409,11 @@ private:
             }
         }
         bool acted_here = false;
+        const values g_before = g_cross;  // every g at t* before the actions (headings compares)
         if (!fire_rounds(set, c, t_star, t_b, same_root, g_b, g_cross, sink, acted_here)) return after_location::end;
         if (acted_here) {
-            return restart(stepper, f, set, c, t_star, t_b, g_cross) ? after_location::restart : after_location::end;
+            return restart(stepper, f, set, c, t_star, t_b, g_before, g_cross) ? after_location::restart
+                                                                               : after_location::end;
         }
         // No action ran (record events only, or nothing fired): the step's own result stands; the scan goes
         // on from b.
@@ -467,9 +469,10 @@ private:
     // the step). False when the step ends: f not finite after the action (as when the rest of the step's first
     // stage meets it: non_finite at the event, with the state the action left).
     template <class Stepper, class System>
-    bool restart(Stepper& stepper, System& f, set_type& set, scan_state& c, T t_star, T t_b, const values& g_cross) {
+    bool restart(Stepper& stepper, System& f, set_type& set, scan_state& c, T t_star, T t_b, const values& g_before,
+                 const values& g_cross) {
         values g_next = g_cross;
-        if (!headings(f, set, t_star, t_b, c.step_h, c.a_state, g_next)) {
+        if (!headings(f, set, t_star, t_b, c.step_h, c.a_state, g_before, g_next)) {
             store(c.y, c.a_state);
             return c.end(status::non_finite, t_star, no_event);
         }
@@ -579,7 +582,8 @@ private:
     // keeps the rules it had without this. False if f itself is NaN or Inf at (t*, y): as from a step, the
     // caller rolls back (the rest of the step would start with that very evaluation).
     template <class System>
-    ODESTEP_EVENTS_NOINLINE bool headings(System& f, set_type& set, T t_star, T t_b, T h, const pack& y, values& g) {
+    ODESTEP_EVENTS_NOINLINE bool headings(System& f, set_type& set, T t_star, T t_b, T h, const pack& y,
+                                          const values& g_before, values& g) {
         pack slope;
         work.rhs += 1;
         if constexpr (K == 1) {
@@ -597,12 +601,18 @@ private:
         evaluate(set, t_star + d, pointers(ahead), g_ahead);
         work.g += E;
         for (std::size_t i = 0; i < E; ++i) {
-            const T change = g_ahead[i] - g[i];
-            if (!is_finite(change) || change == T(0)) continue;
             event_memory<T>& m = memory[i];
             // (m.g is still the value before the crossing: it went from m.g's side to the other)
-            if (m.fired != 0 && m.last == t_star && m.until == t_b)
-                m.through = m.g < T(0) ? change > T(0) : change < T(0);
+            const bool fired_here = m.fired != 0 && m.last == t_star && m.until == t_b;
+            // An action that moved g back, farther to the side before the crossing than it was at t*, made
+            // any later crossing a new one, even inside this firing's bracket (which the finder's cap can
+            // leave wide): not through, whatever g does next.
+            const bool moved_back =
+                fired_here && (m.g < T(0) ? g[i] < g_before[i] && g[i] < T(0) : g[i] > g_before[i] && g[i] > T(0));
+            if (moved_back) m.through = false;
+            const T change = g_ahead[i] - g[i];
+            if (!is_finite(change) || change == T(0)) continue;
+            if (fired_here && !moved_back) m.through = m.g < T(0) ? change > T(0) : change < T(0);
             if (g[i] == T(0)) g[i] = change > T(0) ? std::numeric_limits<T>::min() : -std::numeric_limits<T>::min();
         }
         return true;
