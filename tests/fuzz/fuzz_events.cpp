@@ -299,6 +299,16 @@ struct event_observer {
     }
 };
 
+// adaptive_substeps and the stiff substep forms keep their engine's memory (the adapted step size, the first
+// stage f gave at the interval's start) and its counts after a failed call, by design (docs/events.md, "A failed
+// call and the stepper's memory"): a later call is a valid one to the same tolerances, not its twin's. Their failed
+// calls are checked for the state only. Every other stepper's memory (a multistep history, a kept acceleration)
+// is put back by the event engine when a failed step is rolled back to its start.
+template <class S, class = void>
+struct keeps_memory_on_failure : std::false_type {};
+template <class S>
+struct keeps_memory_on_failure<S, std::void_t<typename S::engine_type>> : std::true_type {};
+
 // The integrate twin: a stepper after a failed run, and its twin (its copy from before a refused run, or from
 // the last observation of a run whose next step failed and left that observation's state), each run the same
 // clean program (the clean right-hand side, pure event functions, four steps of dt from t_start on from the same
@@ -397,20 +407,12 @@ void run_integrate(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_co
     check.finish(r, y, false, 0);
     if (failure(r.status) && check.observed == 0) {
         integrate_twins<T>(stepper, twin, twin_set, f, g, y0, T(0), T(0.125));  // refused: as before the call
-    } else if (failure(r.status) && quiet_failure) {
+    } else if (failure(r.status) && quiet_failure && !keeps_memory_on_failure<Stepper>::value) {
+        // (a stepper that keeps its engine's memory by design is checked for its state alone, as in run_ticks)
         integrate_twins<T>(stepper, observe.at_last, twin_set, f, g, y, r.t, dt);  // as at the last observation
     }
 }
 
-// adaptive_substeps and the stiff substep forms keep their engine's memory (the adapted step size, the first
-// stage f gave at the interval's start) and its counts after a failed call, by design (docs/events.md, "A failed
-// call and the stepper's memory"): a later call is a valid one to the same tolerances, not its twin's. Their failed
-// calls are checked for the state only. Every other stepper's memory (a multistep history, a kept acceleration)
-// is put back by the event engine when a failed step is rolled back to its start.
-template <class S, class = void>
-struct keeps_memory_on_failure : std::false_type {};
-template <class S>
-struct keeps_memory_on_failure<S, std::void_t<typename S::engine_type>> : std::true_type {};
 
 // The tick twin: a loop after a failed call (tick or rearm) that left the state as it was, and its copy from
 // before the call, each tick twice from the same state on the clean right-hand side with pure event functions;
