@@ -256,3 +256,64 @@ TEST_CASE(
         CHECK(std::abs(z[0] - 0.4) <= 1e-12);
     }
 }
+
+TEST_CASE(
+    "issue 24 (found by fuzz_free_events): an event with a wide tolerance sharing a crossing does not move a "
+    "precise event's firing to the step's start") {
+    // y' = 1 (exact in every method) from 0, g = y^2 - 1/2 rising for both events: A (tolerance 0, a callable
+    // action that notes where it ran) and B (the same g, a record with a tolerance of 4, wider than the
+    // step). The crossing is at t = sqrt(1/2) in closed form (not a float: g is not exactly zero at the
+    // located times, so the bracket keeps two ends). Location narrows A's bracket to adjacent times around
+    // it, then B's, on [start, b]: B's tolerance keeps the whole of it. Before the fix the bracket's start
+    // became the step's (B's), and A fired there, at t = 0 (grid, one step of 1) or at a free-running step's
+    // start, with g = -1/2: the action saw a state its event had not reached. Every location mode and loop.
+    auto g = [](double, const state1& s) { return s[0] * s[0] - 0.5; };
+    struct where {
+        double t = -1.0;
+        double y = -1.0;
+        std::size_t calls = 0;
+    };
+    const auto check = [](const where& w) {
+        CHECK(w.calls == 1);
+        CHECK(std::abs(w.t - std::sqrt(0.5)) <= 1e-12);
+        CHECK(std::abs(w.y - std::sqrt(0.5)) <= 1e-12);
+    };
+    const auto events = [&](where& w) {
+        auto note = [&w](double t, state1& s) {
+            w.t = t;
+            w.y = s[0];
+            ++w.calls;
+        };
+        auto b = odestep::make_event<state1>(g, odestep::direction::rising, odestep::record);
+        b.tolerance = 4.0;
+        return std::make_tuple(odestep::make_event<state1>(g, odestep::direction::rising, note), b);
+    };
+    {
+        where w;
+        auto [a, b] = events(w);
+        state1 y{0.0};
+        const auto r = odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 1.0, 1.0, odestep::watch(a, b));
+        CHECK(r.status == odestep::status::ok);
+        check(w);
+    }
+    {
+        where w;
+        auto [a, b] = events(w);
+        state1 y{0.0};
+        const auto r = odestep::integrate(odestep::rk4<state1>{}, clock_rhs{}, y, 0.0, 1.0, 1.0,
+                                          odestep::watch<odestep::on_interpolant<>>(a, b));
+        CHECK(r.status == odestep::status::ok);
+        check(w);
+    }
+    {
+        where w;
+        auto [a, b] = events(w);
+        state1 y{0.0};
+        odestep::adaptive_rk<odestep::tables::dormand_prince54, state1> dp(
+            odestep::tolerances<state1>::uniform(1e-6, 1e-6));
+        dp.set_step_size(1.0);
+        const auto r = odestep::integrate_adaptive(dp, clock_rhs{}, y, 0.0, 1.0, odestep::watch(a, b));
+        CHECK(r.status == odestep::status::ok);
+        check(w);
+    }
+}

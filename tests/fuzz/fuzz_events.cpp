@@ -413,7 +413,6 @@ void run_integrate(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_co
     }
 }
 
-
 // The tick twin: a loop after a failed call (tick or rearm) that left the state as it was, and its copy from
 // before the call, each tick twice from the same state on the clean right-hand side with pure event functions;
 // results, states and the loops' clocks and firing counts must agree bit for bit. The counters are put back.

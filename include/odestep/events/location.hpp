@@ -170,6 +170,11 @@ protected:
             visit(set, c, [&](const auto& e) { tolerance = e.tolerance; });
             tolerance = max_value(tolerance, default_tolerance);
             // The bracket's ends move as the finder narrows it: a_state (from lo_state) and b_state follow.
+            // An earlier event's a, if the new bracket still holds it, stays the bracket's start: that
+            // event's crossing lies after it, and a time in both brackets is within both tolerances (an
+            // event with a wide tolerance sharing the crossing would otherwise fire both at lo).
+            const T a_before = a;
+            const pack a_before_state = a_state;
             a_state = lo_state;
             if constexpr (interpolates) {
                 if (!d.ready) {
@@ -208,6 +213,9 @@ protected:
             if (r.fb == T(0)) {  // g exactly zero at b: the event is at that time, with the state there
                 a = b;
                 a_state = b_state;
+            } else if (sign_h * a_before > r.a && sign_h * a_before < r.b) {
+                a = a_before;
+                a_state = a_before_state;
             }
             if (!evaluate_all(set, time_at(t_s, b, h, t_end), pointers(b_state), g_b)) return status::non_finite_event;
         }
