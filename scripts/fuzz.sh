@@ -4,9 +4,14 @@
 # UndefinedBehaviorSanitizer) in their own build directory, build/fuzz/, and runs them. Each target checks the
 # README's promises as properties and aborts on a broken one (docs/hardening.md lists them).
 #
-#   scripts/fuzz.sh --quick     the gate: every target for 9 s (JOBS at a time) on the
-#                               committed corpus, tests/fuzz/corpus/<target>/, whose regression-* inputs are
-#                               the defects found so far; fails on any finding
+#   scripts/fuzz.sh --quick     the gate: every target (JOBS at a time) on the committed corpus,
+#                               tests/fuzz/corpus/<target>/, whose regression-* inputs are the defects found so
+#                               far, then a fixed number of new inputs from a fixed seed (about 4.5 s a target on
+#                               an idle core; at most 120 s), without comparison-guided mutation (its dictionary
+#                               holds addresses, which change from run to run): nearly the same inputs on every
+#                               machine (libFuzzer's schedule still varies a little), so that a clone's gate
+#                               and CI's agree; fails on any finding. The search for new defects is the timed
+#                               mode below (random seeds, every mutation).
 #   scripts/fuzz.sh SECONDS     all targets for SECONDS in all (split evenly, one after the other), going on past
 #                               a finding; prints the executions per target and where the findings are
 #   scripts/fuzz.sh --known     replays tests/fuzz/known/<target>/: findings not fixed yet (each is expected to
@@ -25,7 +30,22 @@ root=$PWD
 
 read -r -a targets <<< "${FUZZ_TARGETS:-fuzz_loops fuzz_loops_newtonian fuzz_steps fuzz_events fuzz_free_events fuzz_adaptive fuzz_c_api}"
 jobs=${JOBS:-$(nproc 2> /dev/null || echo 2)}
-quick_seconds=9  # (seven targets on two cores in the time six took at 12 s: 43 s against 42)
+quick_seed=20261127  # the gate's fixed seed
+quick_cap=120        # the gate's cap in seconds a target (its runs take about 4.5 s on an idle core)
+# The gate's new inputs a target: about 4.5 s of each on an idle core (rates of 2-minute runs on this project's
+# 2-core machine: fuzz_events 1,000 a second, fuzz_free_events 4,400, fuzz_c_api 8,300, fuzz_adaptive 33,000,
+# fuzz_loops 49,000, fuzz_loops_newtonian 53,000, fuzz_steps 76,000).
+quick_runs() {
+  case "$1" in
+    fuzz_events) echo 5000 ;;
+    fuzz_free_events) echo 20000 ;;
+    fuzz_c_api) echo 40000 ;;
+    fuzz_adaptive) echo 150000 ;;
+    fuzz_loops) echo 220000 ;;
+    fuzz_loops_newtonian) echo 240000 ;;
+    *) echo 340000 ;;
+  esac
+}
 cxx=${CXX_FUZZ:-clang++}
 dir=${FUZZ_BUILD_DIR:-$root/build/fuzz}
 timeout_s=${FUZZ_TIMEOUT:-10}
@@ -121,13 +141,18 @@ fi
 # --- run ---------------------------------------------------------------------------------------------------
 passed=0
 failed=0
-# fuzz_one TARGET SECONDS: one libFuzzer run on the working corpus and the committed one; returns libFuzzer's
-# status and appends its executions to $dir/<target>.runs.
+# fuzz_one TARGET SECONDS [OPTIONS...]: one libFuzzer run on the working corpus and the committed one (the gate:
+# the committed one alone, so that every machine runs the same inputs); returns libFuzzer's status and appends
+# its executions to $dir/<target>.runs.
 fuzz_one() {
   local t=$1 seconds=$2 log=$dir/$1.log
+  shift 2
+  local corpora=("$dir/corpus/$t" "$root/tests/fuzz/corpus/$t")
+  [ "$mode" = --quick ] && corpora=("$dir/gate/$t" "$root/tests/fuzz/corpus/$t")
   mkdir -p "$dir/corpus/$t" "$dir/findings/$t"
-  "$dir/$t" -max_total_time="$seconds" -timeout="$timeout_s" -rss_limit_mb=2048 -print_final_stats=1 \
-    -artifact_prefix="$dir/findings/$t/" "$dir/corpus/$t" "$root/tests/fuzz/corpus/$t" > "$log" 2>&1
+  [ "$mode" = --quick ] && rm -rf "$dir/gate/$t" && mkdir -p "$dir/gate/$t"
+  "$dir/$t" -max_total_time="$seconds" -timeout="$timeout_s" -rss_limit_mb=2048 -print_final_stats=1 "$@" \
+    -artifact_prefix="$dir/findings/$t/" "${corpora[@]}" > "$log" 2>&1
   local status=$?
   sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1 >> "$dir/$t.runs"
   return $status
@@ -161,12 +186,12 @@ if [ "$mode" = --quick ]; then
     : > "$dir/$t.runs"
     rm -f "$dir/$t.status"
     while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
-    (fuzz_one "$t" "$quick_seconds"; echo $? > "$dir/$t.status") &
+    (fuzz_one "$t" "$quick_cap" -seed="$quick_seed" -reload=0 -use_cmp=0 -runs="$(quick_runs "$t")"; echo $? > "$dir/$t.status") &
   done
   wait
   for t in "${targets[@]}"; do
     if [ "$(cat "$dir/$t.status" 2> /dev/null)" = 0 ]; then
-      echo "fuzz: ok   $t: $(cat "$dir/$t.runs") executions in ${quick_seconds} s, no finding"
+      echo "fuzz: ok   $t: $(cat "$dir/$t.runs") executions (seed $quick_seed), no finding"
       passed=$((passed + 1))
     else
       echo "fuzz: FAIL $t: a finding (see $dir/$t.log; inputs in $dir/findings/$t/):"
