@@ -67,7 +67,9 @@ struct step_outcome {
     T t;
     std::size_t fired;
     std::size_t event;
-    bool acted = false;  ///< an event's action ran inside the step (the state at t may differ from the one observed)
+    /// an event's action ran inside the step, or it stopped at its start's time with another state (an offset
+    /// under half an ULP of t): the state at t may differ from the one observed
+    bool acted = false;
 };
 
 /// What the loop ends in: as integrate_result, and the event that stopped it (or no_event).

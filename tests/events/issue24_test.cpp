@@ -317,3 +317,37 @@ TEST_CASE(
         check(w);
     }
 }
+
+TEST_CASE("issue 24 (found by fuzz_events): a grid stop under half an ULP after the step's start is observed") {
+    // y' = 1e20 from y(0) = -1e20 (exact in RK4: y = 1e20 (t - 1), y(1) = 0 exactly); a terminal event
+    // g = y |y| - 6.4e7 (rising, zero at y = 8000) crosses 8e-17 after t = 1, in the second step, under half
+    // an ULP of 1 (1.1e-16). The Illinois finder's first point, 5.6e-17 into the step, lies before the root
+    // (g < 0 there): the bracket's start moves off the step's start, and the run stops at t = 1 with y in
+    // (0, 8000] while the observation at t = 1 saw y = 0. Before the fix the loop judged by time alone and did
+    // not observe the stop: the observer's last state (0) was not the one handed back.
+    struct fast {
+        state1 operator()(double, const state1&) const { return {1e20}; }
+    };
+    const auto ev = odestep::make_event<state1>([](double, const state1& y) { return y[0] * std::abs(y[0]) - 6.4e7; },
+                                                odestep::direction::rising, odestep::terminal);
+    for (const bool on_interpolant : {false, true}) {
+        CAPTURE(on_interpolant);
+        state1 y{-1e20};
+        double t_seen = -1.0;
+        state1 y_seen{-1.0};
+        std::size_t seen = 0;
+        const last_seen observe{&t_seen, &y_seen, &seen};
+        const auto r = on_interpolant
+                           ? odestep::integrate(odestep::rk4<state1>{}, fast{}, y, 0.0, 3.0, 1.0,
+                                                odestep::watch<odestep::on_interpolant<odestep::illinois>>(ev), observe)
+                           : odestep::integrate(odestep::rk4<state1>{}, fast{}, y, 0.0, 3.0, 1.0,
+                                                odestep::watch<odestep::illinois>(ev), observe);
+        CHECK(r.status == odestep::status::stopped_by_event);
+        CHECK(r.t == 1.0);
+        CHECK(y[0] > 0.0);
+        CHECK(y[0] <= 8000.0);
+        CHECK(seen == 3);  // t = 0, 1, and the stop
+        CHECK(t_seen == r.t);
+        CHECK(same_bits(y_seen[0], y[0]));
+    }
+}

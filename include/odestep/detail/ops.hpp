@@ -5,6 +5,7 @@
 #define ODESTEP_DETAIL_OPS_HPP
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <type_traits>
@@ -202,6 +203,15 @@ constexpr std::array<T, N> plus_scaled(const std::array<T, N>& x, T c, const std
     ODESTEP_UNROLL_UNLESS_SIZE
     for (std::size_t n = 0; n < N; ++n) out[n] = x[n] + c * v[n];
     return out;
+}
+
+/// The same state bit for bit as == and the sign tell (+0 and -0 differ; NaN equals nothing): a state the
+/// observer has already seen, or another one.
+template <class T, std::size_t N>
+constexpr bool same_bits(const std::array<T, N>& a, const std::array<T, N>& b) noexcept {
+    for (std::size_t n = 0; n < N; ++n)
+        if (!(a[n] == b[n]) || std::signbit(a[n]) != std::signbit(b[n])) return false;
+    return true;
 }
 
 /// The same values, bit for bit where they are numbers (NaN equals nothing).

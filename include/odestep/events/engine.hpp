@@ -303,6 +303,11 @@ private:
         }
         step_outcome<T> o{c.code, c.t_out, c.fired_here, c.event};
         o.acted = c.acted;
+        // A stop at an offset that rounds to t_s (under half an ULP of it) with a state other than the start's:
+        // a state the observation at t_s was not, to be observed as after an action.
+        if (c.code == status::stopped_by_event && !c.acted && c.t_out == t_s) {
+            for (std::size_t k = 0; k < K; ++k) o.acted = o.acted || !same_bits(start[k], *y[k]);
+        }
         at_start = !c.partial && !c.moved && c.fired_here == 0 && !c.acted && c.t_out == t_s;
         return o;
     }

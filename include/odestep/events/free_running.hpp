@@ -332,19 +332,11 @@ struct record_flags<event_set<Finder, Events...>> {
         std::is_same_v<std::remove_cv_t<decltype(Events::action)>, record_action>...};
 };
 
-// The same state bit for bit (+0 and -0 differ): the state a run stops at is observed unless it is the
-// last one observed, time and state (a step that starts at an event can stop at an offset that rounds to
-// the event's time, with a state the event's observation was not).
-template <class State>
-bool same_bits_as(const State& a, const State& b) noexcept {
-    for (std::size_t i = 0; i < state_traits<State>::size; ++i)
-        if (!(a[i] == b[i]) || std::signbit(a[i]) != std::signbit(b[i])) return false;
-    return true;
-}
-
 // What integrate_adaptive with events observes: the start, each record firing (the event's state, as the
 // location found it), every completed step's end (a step cut at an action's event ends there, with the state the
-// action left), and the state where the run stopped unless it was the last one observed (time and state).
+// action left), and the state where the run stopped unless it was the last one observed, time and state bit for
+// bit (same_bits: a step that starts at an event can stop at an offset that rounds to the event's time, with a
+// state the event's observation was not).
 template <class Observer, class State>
 struct step_output {
     using T = value_type_t<State>;
@@ -368,7 +360,7 @@ struct step_output {
     }
     template <class Replayed>
     void stopped(T t, const State& y, bool acted, Replayed&) {
-        if (acted || !(last == t) || !same_bits_as(last_y, y)) see(t, y);
+        if (acted || !(last == t) || !same_bits(last_y, y)) see(t, y);
     }
 };
 
@@ -424,7 +416,7 @@ struct times_output {
             see(times[next++], y);
             seen = true;
         }
-        if (!seen && (acted || !any || !(last == t) || !same_bits_as(last_y, y))) see(t, y);
+        if (!seen && (acted || !any || !(last == t) || !same_bits(last_y, y))) see(t, y);
     }
 };
 

@@ -100,7 +100,8 @@ event_integrate_result<T, Set::size> drive_events(Stepper& stepper, System& f, S
 /// rest of the step is recomputed from the event, and the stepper is reset (its history, or a kept
 /// acceleration, belongs to the old state). A `record` event leaves the trajectory exactly as it would be
 /// without it. A terminal event at the start of a step (a root within the tolerance after a grid time) is
-/// not observed a second time, unless an action changed the state there.
+/// not observed a second time, unless the state there is another one: an action changed it, or the root lies
+/// under half an ULP of the time after the step's start.
 template <class Stepper, class System, class State, class Set, class Observer,
           std::enable_if_t<detail::is_event_set_v<Set>, int> = 0>
 [[nodiscard]] auto integrate(Stepper&& stepper, System&& f, State& y, detail::time_t_of<State> t0,
