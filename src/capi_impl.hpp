@@ -39,6 +39,7 @@
 #include "odestep/odestep.h"
 #include "odestep/rk/explicit_rk.hpp"
 #include "odestep/status.hpp"
+#include "capi_rk.hpp"
 
 namespace odestep::capi {
 
@@ -475,10 +476,40 @@ struct exact_ops {
     }
 };
 
+/// The single steps of an explicit Runge-Kutta method S (on state<T>) over the caller's n (capi_rk.hpp): no
+/// padding, no copy of y in; the object in the storage is S's (constructed for the loops, which step it; the
+/// single step needs none: explicit_rk holds no state).
+template <class S>
+struct any_n_ops {
+    using T = typename S::value_type;
+    using body = any_n_rk<typename rk_table_of<S>::type, T, max_states>;
+    // Flattened, as explicit_rk's step is: at -Os GCC otherwise keeps the sums' helpers out of line.
+    ODESTEP_STEP_FLATTEN static odestep_status step(stepper_t<T>*, const typename c_types<T>::system* sys, T* y, T t,
+                                                    T dt) {
+        return to_c(body::template step<0>(sys->f, sys->ctx, sys->n, y, t, dt, nullptr, nullptr));
+    }
+    ODESTEP_STEP_FLATTEN static odestep_status step_error(stepper_t<T>*, const typename c_types<T>::system* sys, T* y,
+                                                          T t, T dt, T* e1, [[maybe_unused]] T* e2) {
+        if constexpr (estimates_of<S>::value >= 2) {
+            if (e2 != nullptr) return to_c(body::template step<2>(sys->f, sys->ctx, sys->n, y, t, dt, e1, e2));
+        }
+        if constexpr (estimates_of<S>::value >= 1) {
+            return to_c(body::template step<1>(sys->f, sys->ctx, sys->n, y, t, dt, e1, nullptr));
+        } else {
+            return ODESTEP_INVALID_SETTING;  // (not reached: the entry checks the estimates asked for)
+        }
+    }
+};
+
+/// The single steps of a method for any n above ODESTEP_C_EXACT_STATES, and the form the loops bind: the
+/// explicit Runge-Kutta methods over n (any_n_ops), the others padded (padded_ops).
 template <class T, class Family>
 constexpr sized_ops<T> padded_of() noexcept {
     using S = typename Family::template type<state<T>>;
-    if constexpr (S::system == system_form::newtonian) {
+    if constexpr (!std::is_void_v<typename rk_table_of<S>::type>) {
+        return {&ops_of<S>::construct, &any_n_ops<S>::step, &any_n_ops<S>::step_error, &refuse<T>::step_newton,
+                &refuse<T>::step_newton_kept};
+    } else if constexpr (S::system == system_form::newtonian) {
         return {&ops_of<S>::construct, &refuse<T>::step, &refuse<T>::step_error, &padded_ops<S>::step_newton,
                 &padded_ops<S>::step_newton_kept};
     } else {
@@ -618,12 +649,13 @@ template <class T>
 ODESTEP_INLINE odestep_status step(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1,
                                    T* e2) {
     if (e1 != nullptr) return step_checked<T>(s, sys, y, t, dt, e1, e2);
+    decltype(binding<T>::step) next = &step_checked_plain<T>;
     if (s != nullptr && sys != nullptr && sys->f != nullptr && y != nullptr) {
         const binding<T>& b = binding_of<T>(s);
         const std::size_t n = sys->n;
-        if (b.first_order_n == n && n != 0 && detail::check_step(t, dt) == status::ok) return b.step(s, sys, y, t, dt);
+        if (b.first_order_n == n && n != 0 && detail::check_step(t, dt) == status::ok) next = b.step;
     }
-    return step_checked_plain<T>(s, sys, y, t, dt);
+    return next(s, sys, y, t, dt);
 }
 
 /// step_unbound for x'' = a.
