@@ -116,7 +116,8 @@ ODESTEP_INLINE void over_first(std::size_t n, Body&& body) {
 }
 
 /// One step of the explicit Runge-Kutta table Method over n components (1 <= n <= Max), see the file's comment.
-/// Fn is the C right-hand side void (*)(T t, const T* y, T* dydt, void* ctx).
+/// Fn is the C right-hand side void (*)(T t, const T* y, T* dydt, void* ctx); the size n a std::size_t, or a
+/// std::integral_constant for the steps compiled for one n (ODESTEP_C_EXACT_STATES), whose jumps then fold.
 template <class Method, class T, std::size_t Max>
 struct any_n_rk {
     using row = std::array<T, Max>;  // one stage's derivative or input; components n .. Max-1 unused
@@ -165,8 +166,8 @@ struct any_n_rk {
 
     /// y[0 .. n-1] <- y(t + dt), and with Estimates 1 or 2, e1 (and e2) the estimates of the first (two)
     /// embedded weights; on non_finite nothing is written.
-    template <std::size_t Estimates, class Fn>
-    ODESTEP_INLINE static status step(Fn fn, void* ctx, std::size_t n, T* y, T t, T dt, [[maybe_unused]] T* e1,
+    template <std::size_t Estimates, class Fn, class Size>
+    ODESTEP_INLINE static status step(Fn fn, void* ctx, Size n, T* y, T t, T dt, [[maybe_unused]] T* e1,
                                       [[maybe_unused]] T* e2) {
         std::array<row, S> k;  // not zeroed: f writes the first n components of each stage it evaluates
         row next;
@@ -226,14 +227,14 @@ private:
     template <std::size_t I>
     using a_row = typename rows::template a_row<I>;
 
-    template <std::size_t Estimates, class Fn, std::size_t... I>
-    ODESTEP_INLINE static void stages(Fn fn, void* ctx, std::size_t n, const T* y, T t, T h, T t_end,
+    template <std::size_t Estimates, class Fn, class Size, std::size_t... I>
+    ODESTEP_INLINE static void stages(Fn fn, void* ctx, Size n, const T* y, T t, T h, T t_end,
                                       std::array<row, S>& k, row& next, std::index_sequence<I...>) {
         (stage<I, Estimates>(fn, ctx, n, y, t, h, t_end, k, next), ...);
     }
     // k_I = f(t + c_I h, y + h sum_{j<I} a_Ij k_j) (detail::explicit_stages, over n).
-    template <std::size_t I, std::size_t Estimates, class Fn>
-    ODESTEP_INLINE static void stage(Fn fn, void* ctx, std::size_t n, const T* y, [[maybe_unused]] T t, T h,
+    template <std::size_t I, std::size_t Estimates, class Fn, class Size>
+    ODESTEP_INLINE static void stage(Fn fn, void* ctx, Size n, const T* y, [[maybe_unused]] T t, T h,
                                      [[maybe_unused]] T t_end, std::array<row, S>& k, row& next) {
         if constexpr (evaluated<Estimates>[I]) {
             T ti;
@@ -258,8 +259,8 @@ private:
         ((unweighted<Estimates>[I] ? void(total += k[I][i]) : void()), ...);
     }
     // The exact test after a sum that is not finite (a component that is not, or an overflow).
-    template <std::size_t Estimates>
-    ODESTEP_INLINE static bool all_each_finite(std::size_t n, const T* next, const row& err0, const row& err1,
+    template <std::size_t Estimates, class Size>
+    ODESTEP_INLINE static bool all_each_finite(Size n, const T* next, const row& err0, const row& err1,
                                                const std::array<row, S>& k) noexcept {
         for (std::size_t i = 0; i < n; ++i) {
             bool finite = detail::is_finite(next[i]);
