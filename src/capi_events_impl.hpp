@@ -12,7 +12,8 @@
 //
 // The stepper. The method is chosen at run time (the C method table), so the loop's stepper is an adapter
 // that holds the method and the stepper object's storage by value (owning_adapter); event_stepper resets it
-// (an Adams history) after an action changed the state.
+// (an Adams history) after an action changed the state, and puts it back as it was (kept_object) when it
+// rolls a step back.
 #ifndef ODESTEP_SRC_CAPI_EVENTS_IMPL_HPP
 #define ODESTEP_SRC_CAPI_EVENTS_IMPL_HPP
 
@@ -91,6 +92,25 @@ struct c_newton_action {
     }
 };
 
+/// What an event loop keeps of its stepper object before a step (the engine's stepper_memory, through the
+/// adapters' memory() and restore_memory()): the method's memory_bytes of the object, copied, so that a step
+/// the engine rolls back leaves the stepper as it was (an Adams history goes on), as the C++ loops keep it;
+/// nothing for a method without memory.
+template <class T>
+struct kept_object {
+    alignas(stepper_t<T>) unsigned char bytes[sizeof(stepper_t<T>::storage)];  // the first memory_bytes kept
+};
+template <class T>
+ODESTEP_INLINE kept_object<T> keep_object(const method_ops<T>* m, const unsigned char* storage) noexcept {
+    kept_object<T> k;
+    if (m->memory_bytes != 0) std::memcpy(k.bytes, storage, m->memory_bytes);
+    return k;
+}
+template <class T>
+ODESTEP_INLINE void put_back_object(const method_ops<T>* m, unsigned char* storage, const kept_object<T>& k) noexcept {
+    if (m->memory_bytes != 0) std::memcpy(storage, k.bytes, m->memory_bytes);
+}
+
 /// The loop's stepper: a C method and its stepper object, held by value. exact_rhs_evals only keeps the
 /// loop from wrapping f: c_rhs counts every evaluation into `evaluations` (see event_counts).
 template <class T>
@@ -103,6 +123,8 @@ struct owning_adapter : stepper_defaults<state<T>> {
     alignas(stepper_t<T>) unsigned char storage[sizeof(stepper_t<T>::storage)] = {};
     status step(const c_rhs<T>& f, state<T>& y, T t, T dt) { return m->step(storage, f, y, t, dt, nullptr, nullptr); }
     void reset() noexcept { m->reset(storage); }
+    kept_object<T> memory() const noexcept { return keep_object(m, storage); }   ///< (see kept_object)
+    void restore_memory(const kept_object<T>& k) noexcept { put_back_object(m, storage, k); }
 };
 
 /// The Newtonian loop's stepper. Each step evaluates the acceleration afresh (`kept` false): the loop's x
@@ -120,6 +142,8 @@ struct owning_newton_adapter : stepper_defaults<state<T>> {
         return m->step_newton(storage, a, x, v, nullptr, t, dt, false);
     }
     void reset() noexcept { m->reset(storage); }
+    kept_object<T> memory() const noexcept { return keep_object(m, storage); }   ///< (see kept_object)
+    void restore_memory(const kept_object<T>& k) noexcept { put_back_object(m, storage, k); }
 };
 
 /// What differs between the first-order loop and the Newtonian one.

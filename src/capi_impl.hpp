@@ -32,6 +32,7 @@
 #include <new>
 #include <type_traits>
 
+#include "odestep/events/engine.hpp"
 #include "odestep/integrate.hpp"
 #include "odestep/multistep/adams.hpp"
 #include "odestep/newtonian/classic.hpp"
@@ -39,6 +40,7 @@
 #include "odestep/odestep.h"
 #include "odestep/rk/explicit_rk.hpp"
 #include "odestep/status.hpp"
+#include "capi_rk.hpp"
 
 namespace odestep::capi {
 
@@ -137,6 +139,10 @@ struct method_ops {
     bool newtonian;
     bool uniform_steps;
     unsigned rhs_evals_per_step;
+    /// The bytes of the stepper object a step changes and an event loop must put back when it rolls a step
+    /// back (event_engine's stepper_memory): the object's size for a stepper with memory() (Adams), 0 for
+    /// one without (nothing to keep: the one-step methods).
+    std::size_t memory_bytes;
     void (*construct)(void* storage);
     void (*reset)(void* storage);
     /// y' = f: a step of the object in storage, with up to two estimates (null: not asked for).
@@ -475,10 +481,48 @@ struct exact_ops {
     }
 };
 
+/// The single steps of an explicit Runge-Kutta method S (on state<T>) over the caller's n (capi_rk.hpp): no
+/// padding, no copy of y in; the object in the storage is S's (constructed for the loops, which step it; the
+/// single step needs none: explicit_rk holds no state). Size: std::size_t (n read from the system), or
+/// std::integral_constant<std::size_t, N> for the step compiled for n = N (ODESTEP_C_EXACT_STATES).
+template <class S, class Size = std::size_t>
+struct any_n_ops {
+    using T = typename S::value_type;
+    using body = any_n_rk<typename rk_table_of<S>::type, T, max_states>;
+    static Size size(const typename c_types<T>::system* sys) noexcept {
+        if constexpr (std::is_same_v<Size, std::size_t>) {
+            return sys->n;
+        } else {
+            return Size{};  // (the binding checked that sys->n is N)
+        }
+    }
+    // Flattened, as explicit_rk's step is: at -Os GCC otherwise keeps the sums' helpers out of line.
+    ODESTEP_STEP_FLATTEN static odestep_status step(stepper_t<T>*, const typename c_types<T>::system* sys, T* y, T t,
+                                                    T dt) {
+        return to_c(body::template step<0>(sys->f, sys->ctx, size(sys), y, t, dt, nullptr, nullptr));
+    }
+    ODESTEP_STEP_FLATTEN static odestep_status step_error(stepper_t<T>*, const typename c_types<T>::system* sys, T* y,
+                                                          T t, T dt, T* e1, [[maybe_unused]] T* e2) {
+        if constexpr (estimates_of<S>::value >= 2) {
+            if (e2 != nullptr) return to_c(body::template step<2>(sys->f, sys->ctx, size(sys), y, t, dt, e1, e2));
+        }
+        if constexpr (estimates_of<S>::value >= 1) {
+            return to_c(body::template step<1>(sys->f, sys->ctx, size(sys), y, t, dt, e1, nullptr));
+        } else {
+            return ODESTEP_INVALID_SETTING;  // (not reached: the entry checks the estimates asked for)
+        }
+    }
+};
+
+/// The single steps of a method for any n above ODESTEP_C_EXACT_STATES, and the form the loops bind: the
+/// explicit Runge-Kutta methods over n (any_n_ops), the others padded (padded_ops).
 template <class T, class Family>
 constexpr sized_ops<T> padded_of() noexcept {
     using S = typename Family::template type<state<T>>;
-    if constexpr (S::system == system_form::newtonian) {
+    if constexpr (!std::is_void_v<typename rk_table_of<S>::type>) {
+        return {&ops_of<S>::construct, &any_n_ops<S>::step, &any_n_ops<S>::step_error, &refuse<T>::step_newton,
+                &refuse<T>::step_newton_kept};
+    } else if constexpr (S::system == system_form::newtonian) {
         return {&ops_of<S>::construct, &refuse<T>::step, &refuse<T>::step_error, &padded_ops<S>::step_newton,
                 &padded_ops<S>::step_newton_kept};
     } else {
@@ -492,7 +536,11 @@ template <class T, class Family, std::size_t N>
 constexpr sized_ops<T> sized() noexcept {
     using S = typename Family::template type<std::array<T, N>>;
     using E = exact_ops<S>;
-    if constexpr (S::system == system_form::newtonian) {
+    using P = typename Family::template type<state<T>>;
+    if constexpr (!std::is_void_v<typename rk_table_of<P>::type>) {
+        using A = any_n_ops<P, std::integral_constant<std::size_t, N>>;
+        return {&ops_of<P>::construct, &A::step, &A::step_error, &refuse<T>::step_newton, &refuse<T>::step_newton_kept};
+    } else if constexpr (S::system == system_form::newtonian) {
         return {&E::construct, &refuse<T>::step, &refuse<T>::step_error, &E::step_newton, &E::step_newton_kept};
     } else {
         return {&E::construct, &E::step, &E::step_error, &refuse<T>::step_newton, &refuse<T>::step_newton_kept};
@@ -512,7 +560,7 @@ constexpr method_ops<T> make_ops(const char* name) noexcept {
             // The most of either step: Dormand-Prince's estimating step makes one more than its plain step.
             static_cast<unsigned>(S::rhs_evals_per_step > S::rhs_evals_per_error_step ? S::rhs_evals_per_step
                                                                                       : S::rhs_evals_per_error_step),
-            &ops_of<S>::construct, &ops_of<S>::reset, &ops_of<S>::step, &ops_of<S>::step_newton,
+            detail::has_step_memory<S>::value ? sizeof(S) : 0, &ops_of<S>::construct, &ops_of<S>::reset, &ops_of<S>::step, &ops_of<S>::step_newton,
             sizes_of<T, Family>(std::make_index_sequence<exact_states>{}), padded_of<T, Family>()};
 }
 
@@ -611,19 +659,20 @@ template <class T>
 
 /// A single step of y' = f. The plain step's fast path is one test of everything: the pointers not null, n
 /// the bound one (whose method and n were checked when it was bound) and t and dt good; then a tail call of
-/// the bound step. Any test failing, step_checked_plain, also a tail call with the same arguments, finds
-/// the status. (Returning each test's status here made GCC keep a frame for the call of step_unbound on
-/// Cortex-M4F and pass a null estimate on the stack: about 10 instructions more on every step.)
+/// the bound step. Any test failing, step_checked_plain, with the same arguments, finds the status. The two
+/// are one indirect tail call of the function chosen, with the arguments as they came: as two calls, GCC
+/// copied the arguments aside for the slow one and back (about 10 instructions on every step, Cortex-M4F).
 template <class T>
 ODESTEP_INLINE odestep_status step(stepper_t<T>* s, const typename c_types<T>::system* sys, T* y, T t, T dt, T* e1,
                                    T* e2) {
     if (e1 != nullptr) return step_checked<T>(s, sys, y, t, dt, e1, e2);
+    decltype(binding<T>::step) next = &step_checked_plain<T>;
     if (s != nullptr && sys != nullptr && sys->f != nullptr && y != nullptr) {
         const binding<T>& b = binding_of<T>(s);
         const std::size_t n = sys->n;
-        if (b.first_order_n == n && n != 0 && detail::check_step(t, dt) == status::ok) return b.step(s, sys, y, t, dt);
+        if (b.first_order_n == n && n != 0 && detail::check_step(t, dt) == status::ok) next = b.step;
     }
-    return step_checked_plain<T>(s, sys, y, t, dt);
+    return next(s, sys, y, t, dt);
 }
 
 /// step_unbound for x'' = a.
@@ -670,13 +719,13 @@ template <class T>
 ODESTEP_INLINE odestep_status step_newton(stepper_t<T>* s, const typename c_types<T>::newton* sys, T* x, T* v, T* acc,
                                           T t, T dt) {
     if (acc != nullptr) return step_newton_checked<T>(s, sys, x, v, acc, t, dt);
+    decltype(binding<T>::step_newton) next = &step_newton_checked_plain<T>;
     if (s != nullptr && sys != nullptr && sys->a != nullptr && x != nullptr && v != nullptr) {
         const binding<T>& b = binding_of<T>(s);
         const std::size_t n = sys->n;
-        if (b.newton_n == n && n != 0 && detail::check_step(t, dt) == status::ok)
-            return b.step_newton(s, sys, x, v, t, dt);
+        if (b.newton_n == n && n != 0 && detail::check_step(t, dt) == status::ok) next = b.step_newton;
     }
-    return step_newton_checked_plain<T>(s, sys, x, v, t, dt);
+    return next(s, sys, x, v, t, dt);
 }
 
 /// The stepper of the loops: the C method behind the stepper interface the C++ loops take. Its traits are

@@ -178,11 +178,11 @@ extern const odestep_method_d odestep_forest_ruth_d;
 typedef struct odestep_stepper_d {
     const odestep_method_d* method;  ///< the method; set by odestep_stepper_init_d
     union {
-        unsigned char bytes[(ODESTEP_C_STEPPER_SCALARS * sizeof(double))];  ///< the stepper object
-        double align_scalar;                                                ///< alignment only
-        void* align_pointer;                                                ///< alignment only
-        uint64_t align_integer;                                             ///< alignment only
-    } storage;                                                              ///< not to be touched
+        unsigned char bytes[(ODESTEP_C_STEPPER_SCALARS * sizeof(double)) + (4u * sizeof(void*))];  ///< the object
+        double align_scalar;                                                                       ///< alignment only
+        void* align_pointer;                                                                       ///< alignment only
+        uint64_t align_integer;                                                                    ///< alignment only
+    } storage;                                                                                     ///< not to be touched
 } odestep_stepper_d;
 
 /// What a loop did, counted (the C++ odestep::counts, member for member; see docs/reference.md). A member is

@@ -617,6 +617,60 @@ static void test_event_nan(void) {
     CHECK_CLOSE(tick.t, 0.1, 1e-15);
 }
 
+/* A tick rolled back after the stepper stepped (g NaN at the step's end: ODESTEP_NON_FINITE_EVENT) leaves the
+ * stepper as it was, as the C++ loops leave it: an Adams-Bashforth 4 history goes on, and the ticks after the
+ * failed one give, bit for bit, what a loop that never had it gives (a stepper reset there would restart
+ * its history and step differently). g never crosses zero here (y[0] stays in [-1, 1]). */
+typedef struct flaky {
+    int calls;
+    int nan_at; /* the call of g that returns NaN (0: none) */
+} flaky;
+static double flaky_g_d(double t, const double* y, void* ctx) {
+    flaky* f = (flaky*)ctx;
+    (void)t;
+    ++f->calls;
+    return f->calls == f->nan_at ? (double)NAN : y[0] + 10.0;
+}
+static void test_event_roll_back_keeps_history(void) {
+    odestep_event_loop_d plain;
+    odestep_event_loop_d failing;
+    const odestep_system_d sys = {swing_d, NULL, 2};
+    odestep_event_d e_plain;
+    odestep_event_d e_failing;
+    flaky f_plain = {0, 0};
+    flaky f_failing = {0, 0};
+    double y_plain[2] = {1.0, 0.0};
+    double y_failing[2] = {1.0, 0.0};
+    double kept[2];
+    odestep_tick_d tick;
+    int k;
+    (void)memset(&e_plain, 0, sizeof e_plain);
+    e_plain.g = flaky_g_d;
+    e_plain.direction = ODESTEP_EITHER;
+    e_failing = e_plain;
+    e_plain.ctx = &f_plain;
+    e_failing.ctx = &f_failing;
+    CHECK(odestep_event_loop_start_d(&plain, &odestep_ab4_d, &e_plain, 1, NULL, &sys, y_plain, 0.0, 0.1) ==
+          ODESTEP_OK);
+    CHECK(odestep_event_loop_start_d(&failing, &odestep_ab4_d, &e_failing, 1, NULL, &sys, y_failing, 0.0, 0.1) ==
+          ODESTEP_OK);
+    for (k = 0; k < 6; ++k) { /* past AB4's start: its history is full */
+        CHECK(odestep_event_loop_tick_d(&plain, &sys, y_plain, &tick) == ODESTEP_OK);
+        CHECK(odestep_event_loop_tick_d(&failing, &sys, y_failing, &tick) == ODESTEP_OK);
+    }
+    kept[0] = y_failing[0];
+    kept[1] = y_failing[1];
+    f_failing.nan_at = f_failing.calls + 1; /* the next g: at the next step's end */
+    CHECK(odestep_event_loop_tick_d(&failing, &sys, y_failing, &tick) == ODESTEP_NON_FINITE_EVENT);
+    CHECK(y_failing[0] == kept[0] && y_failing[1] == kept[1]);
+    for (k = 0; k < 6; ++k) {
+        CHECK(odestep_event_loop_tick_d(&plain, &sys, y_plain, &tick) == ODESTEP_OK);
+        CHECK(odestep_event_loop_tick_d(&failing, &sys, y_failing, &tick) == ODESTEP_OK);
+    }
+    CHECK(memcmp(y_plain, y_failing, sizeof y_plain) == 0);
+    CHECK_CLOSE(odestep_event_loop_time_d(&failing), 1.2, 1e-15);
+}
+
 /* The ball again as Newton's equations, x'' = -g, with velocity Verlet: its step is exact for a constant
  * acceleration (x + v h + a h^2 / 2, v + a h), so the bounce times are the closed form's as above. */
 static void fall_d(double t, const double* x, double* a, void* ctx) {
@@ -953,6 +1007,7 @@ int main(void) {
     test_terminal_event();
     test_event_bad_input();
     test_event_nan();
+    test_event_roll_back_keeps_history();
     test_newton_events();
     test_verlet_kept();
     test_every_status();

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: BSL-1.0
 // The C API's single steps (src/capi_impl.hpp) compiled here with ODESTEP_C_EXACT_STATES 2, so that both of
-// their forms run: n = 1 and 2 exact (the stepper of std::array<double, n>), n = 3 .. ODESTEP_C_MAX_STATES
-// padded. Expected values: the C++ steppers called directly on std::array<double, n> (the padding changes no
-// operation on the first n components). Also the binding a step checks instead of the method and n: a new
-// n starts afresh, the bound one continues, a loop's history goes on in single steps, and every status of
-// the header on a bound stepper, with the caller's state untouched. (The library's own tests, tests/c/,
-// run the default build, where every n up to 8 is exact.)
+// their forms run: n = 1 and 2 compiled for n, n = 3 .. ODESTEP_C_MAX_STATES the form over a run-time n (for
+// the explicit Runge-Kutta methods, src/capi_rk.hpp; padded for Adams and velocity Verlet). Expected values:
+// the C++ steppers called directly on std::array<double, n> (each component's arithmetic is theirs), and
+// RK4 written out by hand. Also the binding a step checks instead of the method and n: a new n starts
+// afresh, the bound one continues, a loop's history goes on in single steps, and every status of the header
+// on a bound stepper, with the caller's state untouched. (The library's own tests, tests/c/, run the
+// default build, where no n is compiled on its own.)
 #include "methods.hpp"
 
 #include <doctest/doctest.h>
@@ -24,7 +25,9 @@ namespace {
 namespace capi = odestep::capi;
 
 using capi_test::ab4_method;
+using capi_test::dop853_method;
 using capi_test::dp54_method;
+using capi_test::midpoint_method;
 using capi_test::rk4_method;
 using capi_test::verlet_method;
 
@@ -131,7 +134,116 @@ void compare_dp54_error() {
     CHECK(odestep_test::same_bits(error, kept_error));
 }
 
+// DOP853's two estimates (the estimating step with e2) against the C++ step, bit for bit.
+template <std::size_t N>
+void compare_dop853_two_estimates() {
+    std::size_t n = N;
+    const odestep_system_d sys{decay_c, &n, N};
+    odestep_stepper_d s;
+    REQUIRE(capi::init<double>(&s, &dop853_method) == ODESTEP_OK);
+    std::array<double, N> y{};
+    for (std::size_t i = 0; i < N; ++i) y[i] = 1.0 + 0.5 * static_cast<double>(i);
+    std::array<double, N> expected = y;
+    std::array<double, N> e1{};
+    std::array<double, N> e2{};
+    std::array<double, N> expected_e1{};
+    std::array<double, N> expected_e2{};
+    for (int k = 0; k < 3; ++k) {
+        const double t = 0.25 * k;
+        REQUIRE(capi::step<double>(&s, &sys, y.data(), t, 0.25, e1.data(), e2.data()) == ODESTEP_OK);
+        REQUIRE(odestep::dop853<std::array<double, N>>{}.step(decay_cpp<N>, expected, t, 0.25, expected_e1,
+                                                              expected_e2) == odestep::status::ok);
+    }
+    CHECK(odestep_test::same_bits(y, expected));
+    CHECK(odestep_test::same_bits(e1, expected_e1));
+    CHECK(odestep_test::same_bits(e2, expected_e2));
+}
+
+// y_i' = y_i * 1e300 for the last component, -y_i for the others: from a last component of 1e10 the first stage
+// overflows to Inf there (every other component stays finite).
+void blow_up_last(double, const double* y, double* d, void* ctx) {
+    const std::size_t n = *static_cast<const std::size_t*>(ctx);
+    for (std::size_t i = 0; i < n; ++i) d[i] = i + 1 == n ? y[i] * 1e300 : -y[i];
+}
+
+// A step that is not finite in its last component only puts every component back, bit for bit (the step
+// over n writes y_{n+1} over y before its test and puts y_n back): -0.0 and a subnormal included.
+template <std::size_t N>
+void roll_back_every_component() {
+    std::size_t n = N;
+    const odestep_system_d sys{blow_up_last, &n, N};
+    for (const odestep_method_d* method : {&rk4_method, &dp54_method}) {
+        odestep_stepper_d s;
+        REQUIRE(capi::init<double>(&s, method) == ODESTEP_OK);
+        std::array<double, N> y{};
+        for (std::size_t i = 0; i < N; ++i) y[i] = 0.5 + static_cast<double>(i);
+        y[0] = -0.0;
+        if (N > 2) y[1] = std::numeric_limits<double>::denorm_min();
+        y[N - 1] = 1e10;
+        const std::array<double, N> kept = y;
+        CHECK(capi::step<double>(&s, &sys, y.data(), 0.0, 0.1, nullptr, nullptr) == ODESTEP_NON_FINITE);
+        CHECK(odestep_test::same_bits(y, kept));
+        std::array<double, N> error{};
+        const std::array<double, N> kept_error = error;
+        if (method == &dp54_method) {
+            CHECK(capi::step<double>(&s, &sys, y.data(), 0.0, 0.1, error.data(), nullptr) == ODESTEP_NON_FINITE);
+            CHECK(odestep_test::same_bits(y, kept));
+            CHECK(odestep_test::same_bits(error, kept_error));
+        }
+    }
+}
+
+// A forcing y_i' = g(t) that is NaN at its first call only: the midpoint rule's first stage k1 has weight 0
+// (y + h k2), so its NaN reaches no result; the step still reports it (explicit_rk's test of the stages no
+// weight reaches), and the C step agrees with the C++ one.
+struct first_call_nan {
+    std::size_t n;
+    int calls;
+};
+void forcing_c(double t, const double*, double* d, void* ctx) {
+    auto* c = static_cast<first_call_nan*>(ctx);
+    const double g = c->calls++ == 0 ? std::numeric_limits<double>::quiet_NaN() : std::cos(t);
+    for (std::size_t i = 0; i < c->n; ++i) d[i] = g;
+}
+template <std::size_t N>
+void unweighted_stage_not_finite() {
+    first_call_nan c{N, 0};
+    const odestep_system_d sys{forcing_c, &c, N};
+    odestep_stepper_d s;
+    REQUIRE(capi::init<double>(&s, &midpoint_method) == ODESTEP_OK);
+    std::array<double, N> y{};
+    for (std::size_t i = 0; i < N; ++i) y[i] = static_cast<double>(i);
+    const std::array<double, N> kept = y;
+    CHECK(capi::step<double>(&s, &sys, y.data(), 0.0, 0.1, nullptr, nullptr) == ODESTEP_NON_FINITE);
+    CHECK(odestep_test::same_bits(y, kept));
+    first_call_nan cpp_calls{N, 0};
+    std::array<double, N> cpp = kept;
+    const auto f = [&cpp_calls](double t, const std::array<double, N>& in, std::array<double, N>& d) {
+        forcing_c(t, in.data(), d.data(), &cpp_calls);
+    };
+    CHECK(odestep::euler_richardson<std::array<double, N>>{}.step(f, cpp, 0.0, 0.1) == odestep::status::non_finite);
+    // The next step (no NaN any more) is good in both.
+    CHECK(capi::step<double>(&s, &sys, y.data(), 0.0, 0.1, nullptr, nullptr) == ODESTEP_OK);
+    CHECK(odestep::euler_richardson<std::array<double, N>>{}.step(f, cpp, 0.0, 0.1) == odestep::status::ok);
+    CHECK(odestep_test::same_bits(y, cpp));
+}
+
 }  // namespace
+
+TEST_CASE("C API single steps: the step over n puts every component back when it fails, and tests the stages no "
+          "weight reaches") {
+    roll_back_every_component<1>();
+    roll_back_every_component<3>();
+    roll_back_every_component<capi::max_states>();
+    unweighted_stage_not_finite<3>();
+    unweighted_stage_not_finite<capi::max_states>();
+}
+
+TEST_CASE("C API single steps: DOP853's two estimates over n give the C++ step's bit for bit") {
+    compare_dop853_two_estimates<1>();
+    compare_dop853_two_estimates<3>();
+    compare_dop853_two_estimates<capi::max_states>();
+}
 
 TEST_CASE("C API single steps: n = 1 (exact), 2 (exact), 3 and MAX (padded) give RK4 written out by hand") {
     compare_hand_rk4<1>();
@@ -144,6 +256,7 @@ TEST_CASE("C API single steps: the estimating step, exact and padded, gives the 
     compare_dp54_error<1>();
     compare_dp54_error<2>();
     compare_dp54_error<3>();
+    compare_dp54_error<capi::max_states>();
 }
 
 TEST_CASE("C API single steps: every n, exact or padded, gives the C++ step on std::array<double, n> bit for bit") {

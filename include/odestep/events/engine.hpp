@@ -76,8 +76,8 @@ constexpr event_result call_action(Action& action, T t, direction crossed, const
 // step the engine rolls back to its start (a failure seen after the stepper stepped: g not finite at the step's
 // end, at a probe or in a location) leaves the stepper as it was, and the next call goes on as if the failed one
 // had not happened. A stepper without memory() keeps nothing and pays nothing; one that has reset() (a user's
-// stepper, the C API's adapter, whose copy would also hold its counts) is reset after a roll-back, as after any
-// step that does not end where the stepper expects.
+// stepper) is reset after a roll-back, as after any step that does not end where the stepper expects. (The C
+// API's adapters publish memory(): src/capi_events_impl.hpp.)
 template <class S, class = void>
 struct has_step_memory : std::false_type {};
 template <class S>
