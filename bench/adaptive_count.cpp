@@ -8,6 +8,13 @@
 //           '--toggle-collect=adaptive_run_*'), one dump per solver and tolerance; prints per run the
 //           evaluations of f and the error at t = 10 against a long double reference (odestep's DOP853 at
 //           1e-18), so that instructions can be read at equal tolerance and at equal achieved error.
+//   gains   the controller's question (issue 27 item 5, not changed): the same runs at rtol = atol = 1e-4 ..
+//           1e-10 with odestep's default gains (0.7 / k, 0.4 / k), with Hairer's dopri5.f defaults
+//           (step_control alpha 0.17, beta 0.04) and Odeint; prints evaluations and errors at t = 10, and
+//           brackets each run as `count` does (adaptive_run_*: instructions under callgrind). Compiled only
+//           with -DBENCH_ADAPTIVE_GAINS: a second caller of the engine changes what GCC inlines into the
+//           first (odestep's count goes from about 133 to 144 instructions an evaluation), so that build's
+//           counts compare the two gain sets with each other and with Odeint, not with `count`'s.
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -43,6 +50,16 @@ __attribute__((noipa)) int adaptive_run_odestep(S& y, double tol) {
     const auto r = odestep::integrate_adaptive(engine, rhs, y, 0.0, t1, 10000000);
     return r.status == odestep::status::ok ? 0 : 1;
 }
+#ifdef BENCH_ADAPTIVE_GAINS
+__attribute__((noipa)) int adaptive_run_odestep_dopri5_gains(S& y, double tol) {
+    odestep::step_control<double> c;
+    c.alpha = 0.17;  // dopri5.f: EXPO1 = 0.2 - 0.75 BETA
+    c.beta = 0.04;   // dopri5.f: BETA, its default
+    odestep::adaptive_rk<odestep::tables::dormand_prince54, S> engine(odestep::tolerances<S>::uniform(tol, tol), c);
+    const auto r = odestep::integrate_adaptive(engine, rhs, y, 0.0, t1, 10000000);
+    return r.status == odestep::status::ok ? 0 : 1;
+}
+#endif
 __attribute__((noipa)) int adaptive_run_odeint(S& y, double tol, double h0) {
     namespace oi = boost::numeric::odeint;
     auto st = oi::make_controlled(tol, tol, oi::runge_kutta_dopri5<S>());
@@ -73,20 +90,36 @@ double error(const S& y, const L& ref) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 2 || std::strcmp(argv[1], "count") != 0) {
-        std::fprintf(stderr, "usage: %s count\n", argv[0]);
+#ifdef BENCH_ADAPTIVE_GAINS
+    const bool gains = argc == 2 && std::strcmp(argv[1], "gains") == 0;
+#else
+    const bool gains = false;
+#endif
+    if (argc != 2 || (!gains && std::strcmp(argv[1], "count") != 0)) {
+        std::fprintf(stderr, "usage: %s count | gains\n", argv[0]);
         return 2;
     }
     const L ref = reference();
     int failures = 0;
-    for (const double tol : {1e-4, 1e-6, 1e-7, 1e-8}) {
+    const auto count_tols = {1e-4, 1e-6, 1e-7, 1e-8};
+    const auto gains_tols = {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10};
+    const char* const count_solvers[] = {"odestep", "odeint"};
+    const char* const gains_solvers[] = {"odestep", "odestep_dopri5_gains", "odeint"};
+    for (const double tol : gains ? gains_tols : count_tols) {
         const double h0 = first_step(tol);
-        for (const char* solver : {"odestep", "odeint"}) {
+        for (std::size_t k = 0; k < (gains ? 3U : 2U); ++k) {
+            const char* solver = gains ? gains_solvers[k] : count_solvers[k];
             S y = y_start;
             evals = 0;
-            const bool ours = std::strcmp(solver, "odestep") == 0;
             CALLGRIND_ZERO_STATS;
-            failures += ours ? adaptive_run_odestep(y, tol) : adaptive_run_odeint(y, tol, h0);
+            if (std::strcmp(solver, "odestep") == 0)
+                failures += adaptive_run_odestep(y, tol);
+            else if (std::strcmp(solver, "odeint") == 0)
+                failures += adaptive_run_odeint(y, tol, h0);
+#ifdef BENCH_ADAPTIVE_GAINS
+            else
+                failures += adaptive_run_odestep_dopri5_gains(y, tol);
+#endif
             char name[64];
             std::snprintf(name, sizeof name, "adaptive %s %.0e", solver, tol);
             CALLGRIND_DUMP_STATS_AT(name);

@@ -460,6 +460,38 @@ TEST_CASE("adams: t within a few ULPs of the expected time is accepted, as the t
     });
 }
 
+TEST_CASE("adams: the edge of the allowance is the same on the inline check as on the full one") {
+    // A grid of exact binary times (dt = 1/8 from 0): after 8 steps the expected time is 1 and the allowance
+    // 8 eps (|1| + |dt| + |t_first|) = 9 eps (detail::continuation). Above 1 an ULP is eps, below it eps / 2:
+    // 1 + k eps is on the grid for k <= 9 and 1 - k eps / 2 for k <= 18, nothing beyond. The step checks
+    // t - dt == t_prev first, then within half the allowance inline (4 eps here), then the full check out
+    // of line; each offset below is on one of the three paths, and a wider inline test would admit 1 + 10 eps.
+    const double eps = std::numeric_limits<double>::epsilon();
+    const double dt = 0.125;
+    for_each_type<adams_methods>([&](auto method) {
+        using M = decltype(method);
+        using stepper_t = odestep::adams<M, state>;
+        const auto reference = clean_run<stepper_t, 9>(dt);
+        INFO(doctest::String(M::name));
+        for (const double k : {0.0, 3.0, 4.0, 7.0, 9.0, -4.0, -8.0, -18.0}) {
+            INFO("k = ", k);
+            stepper_t stepper;
+            state y = y_start;
+            for (std::size_t i = 0; i < 8; ++i)
+                REQUIRE(stepper.step(exp_sin{}, y, static_cast<double>(i) * dt, dt) == odestep::status::ok);
+            std::size_t calls = 0;
+            const state before = y;
+            for (const double bad : {1.0 + 10 * eps, 1.0 + 16 * eps, 1.0 - 19 * eps / 2, 1.0 - 32 * eps / 2})
+                CHECK(stepper.step(counting_exp_sin{&calls}, y, bad, dt) == odestep::status::step_mismatch);
+            CHECK(calls == 0);
+            CHECK(same_bits(y, before));
+            const double t = k > 0 ? 1.0 + k * eps : 1.0 + k * eps / 2;
+            REQUIRE(stepper.step(exp_sin{}, y, t, dt) == odestep::status::ok);
+            CHECK(same_bits(y, reference[8]));  // exp_sin does not read t
+        }
+    });
+}
+
 TEST_CASE("adams: counter times t0 + i dt are accepted across zero and over 10^6 float steps") {
     // From t0 = -1000 to 10 in steps of 0.1 in double: near t = 0 the counter time has the rounding of
     // t0 and i dt (about 1e-13), far more than a few ULPs of |t| + |dt| alone; the tolerance includes
@@ -515,6 +547,51 @@ TEST_CASE(
         REQUIRE(odestep::integrate_n_steps(fresh, exp_sin{}, c, 1.0, 0.05, 8).status == odestep::status::ok);
         INFO(doctest::String(M::name));
         CHECK(same_bits(a, c));
+    });
+}
+
+TEST_CASE("adams: reset() or a restored memory from before the history filled restarts the starter on the same grid") {
+    // The common path's test (dt the history's and t - dt the last step's t) passes on the same grid after a
+    // reset() too; the history is empty then, so the step must be the starter's (rk4's, bit for bit), and the
+    // run the same as a fresh stepper's from there. Likewise a memory() kept before the step that filled the
+    // history and restored after it: the retried step is the starter's again.
+    for_each_type<adams_methods>([](auto method) {
+        using M = decltype(method);
+        using stepper_t = odestep::adams<M, state>;
+        INFO(doctest::String(M::name));
+        const double dt = 0.125;
+        stepper_t stepper;
+        state y = y_start;
+        for (std::size_t i = 0; i < 8; ++i)
+            REQUIRE(stepper.step(exp_sin{}, y, static_cast<double>(i) * dt, dt) == odestep::status::ok);
+        stepper.reset();
+        state by_rk4 = y;
+        REQUIRE(odestep::rk4<state>{}.step(exp_sin{}, by_rk4, 1.0, dt) == odestep::status::ok);
+        state c = y;
+        stepper_t fresh;
+        for (std::size_t i = 8; i < 16; ++i) {
+            const double t = static_cast<double>(i) * dt;
+            REQUIRE(stepper.step(exp_sin{}, y, t, dt) == odestep::status::ok);
+            REQUIRE(fresh.step(exp_sin{}, c, t, dt) == odestep::status::ok);
+            if (i == 8) CHECK(same_bits(y, by_rk4));
+            CHECK(same_bits(y, c));
+        }
+
+        stepper_t s2;
+        state z = y_start;
+        for (std::size_t i = 0; i + 2 < stepper_t::steps; ++i)
+            REQUIRE(s2.step(exp_sin{}, z, static_cast<double>(i) * dt, dt) == odestep::status::ok);
+        const auto kept = s2.memory();
+        const state z_kept = z;
+        const double t_fill = static_cast<double>(stepper_t::steps - 2) * dt;
+        REQUIRE(s2.step(exp_sin{}, z, t_fill, dt) == odestep::status::ok);  // the history is full now
+        REQUIRE(s2.history_size() == stepper_t::steps - 1);
+        const state z_filled = z;
+        s2.restore_memory(kept);
+        z = z_kept;
+        REQUIRE(s2.step(exp_sin{}, z, t_fill, dt) == odestep::status::ok);  // the same starter's step again
+        CHECK(same_bits(z, z_filled));
+        CHECK(s2.history_size() == stepper_t::steps - 1);
     });
 }
 

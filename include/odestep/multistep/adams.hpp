@@ -29,8 +29,8 @@ struct is_explicit_rk<explicit_rk<Method, State, Check>> : std::true_type {};
 /// A fixed-step Adams method (Adams-Bashforth, or Adams-Bashforth-Moulton PECE) from `Method::table<T>`.
 ///
 /// Each step evaluates f_n = f(t_n, y_n) at its start and combines it with the k-1 derivatives of the
-/// previous steps, which the stepper keeps (with the dt they were taken with and the time the next step
-/// must start at) in a fixed-size array inside the object (newest first, shifted each step, for a small
+/// previous steps, which the stepper keeps (with the dt they were taken with and the time of the last step,
+/// which the next continues by dt) in a fixed-size array inside the object (newest first, shifted each step, for a small
 /// state; a ring for a large one): no heap. An Adams-Bashforth step then
 /// costs one evaluation of f, a PECE step two (the second E of PECE is the next step's f_n).
 ///
@@ -116,40 +116,22 @@ public:
     /// the history changed.
     template <class System>
     ODESTEP_STEP_FLATTEN [[nodiscard]] status step(System&& f, State& y, T t, T dt) {
-        // The k-1 starting steps, out of line (their grid check included): the rare path.
-        if (ODESTEP_UNLIKELY(count_ < M)) return starter_step(f, y, t, dt);
-        // The history's grid (detail::continuation): the same dt, and t the last step's t + dt to within the
-        // rounding of a counter's t0 + i dt. A NaN or infinite t is on no grid: invalid_time, tested only
-        // where the grid check failed (it passes only finite times).
-        if (ODESTEP_UNLIKELY(!next_.on_grid(t, dt)))
-            return detail::is_finite(t) ? status::step_mismatch : status::invalid_time;
-        State fn;
-        detail::evaluate(f, t, y, fn);
-        // Unchecked, y_{n+1} is computed into y itself (component n of the formula reads y[n] alone).
-        State next;
-        State& out = detail::result_target<!checks_finiteness>(next, y);
-        if constexpr (pece) {
-            State predicted;
-            combine<predictor>(predicted, y, fn, fn);  // the second fn is not read: beta has no f_{n+1}
-            State fp;
-            detail::evaluate(f, t + dt, static_cast<const State&>(predicted), fp);
-            combine<corrector>(out, y, fp, fn);
-        } else {
-            combine<predictor>(out, y, fn, fn);
-        }
-        // f_n enters y_{n+1} with a non-zero weight (as does f(t_{n+1}, p) in PECE), and x * Inf or x * NaN is
-        // never finite, nor is a sum with a non-finite term: testing y_{n+1} tests the derivatives too.
-        if (!detail::all_finite_under<Check>(next)) return status::non_finite;
-        next_.expect(t, dt, y, true);  // continues the grid: t + dt
-        record(fn);
-        if constexpr (checks_finiteness) detail::assign(y, next);
-        return status::ok;
+        // The common path: the history is full (grid_dt_ is NaN until then, which equals nothing), dt is the
+        // history's, and t continues its grid: t - dt is the last step's t exactly (which proves t finite, as
+        // last_t_ and dt are: an infinite t minus dt is infinite, a NaN one NaN), or failing that t is within
+        // near_grid's allowance of t_prev + dt, both inside what the full check accepts. Everything else (the
+        // k-1 starting steps, the rest of the full check's allowance, a mismatch, a non-finite t) goes out of
+        // line, to off_grid.
+        if (ODESTEP_UNLIKELY(!(dt == grid_dt_ && (t - dt == last_t_ || near_grid(t, dt)))))
+            return off_grid(f, y, t, dt);
+        return formula_step(f, y, t, dt);
     }
 
     /// Empties the history: the next step accepts any t and dt and the next k-1 steps are the starter's.
     void reset() noexcept {
         count_ = 0;
         slot_ = 0;
+        grid_dt_ = std::numeric_limits<T>::quiet_NaN();
     }
 
     /// How many past derivatives are kept, 0 to k-1; at k-1 the multistep formula steps.
@@ -160,19 +142,20 @@ public:
     /// restored count of 0 starts it again.)
     struct memory_type {
         std::array<State, M> history;  ///< the kept derivatives, as history_
-        T next_t;                      ///< the time the next step is expected at
+        T last_t;                      ///< the time of the last step (the next continues it by dt)
         std::size_t count;             ///< derivatives kept
         std::size_t slot;              ///< the ring's next free slot (0 for a shifted history)
     };
     /// The memory a step changes, to hand back to restore_memory(): a caller that may undo a step (the event
     /// engine, when it rolls a step back to its start) keeps it from before the step.
-    memory_type memory() const noexcept { return memory_type{history_, next_.t, count_, slot_}; }
+    memory_type memory() const noexcept { return memory_type{history_, last_t_, count_, slot_}; }
     /// Puts back the memory() kept before the last step (which is then undone: the caller puts y back too).
     void restore_memory(const memory_type& m) noexcept {
         history_ = m.history;
-        next_.t = m.next_t;
+        last_t_ = m.last_t;
         count_ = m.count;
         slot_ = m.slot;
+        grid_dt_ = count_ == M ? next_.dt : std::numeric_limits<T>::quiet_NaN();
     }
 
 private:
@@ -182,7 +165,13 @@ private:
     // would cost more than the ring's index arithmetic and selects, a few instructions per entry.
     static constexpr bool shifted = (M - 1) * N <= 32;
     std::array<State, M> history_{};
-    detail::continuation<State> next_{};  // where the next step must start (t + dt of the last), and its dt
+    // The grid's full check (detail::continuation: its dt, the first step's time, and the expected time, set
+    // from last_t_ where it is needed), the last step's time (finite), the common path's dt (the history's
+    // once it is full, NaN before) and near_grid's constant term.
+    detail::continuation<State> next_{};
+    T last_t_ = T(0);
+    T grid_dt_ = std::numeric_limits<T>::quiet_NaN();
+    T slack_ = T(0);
     std::size_t count_ = 0;
     std::size_t slot_ = 0;
     // dt times each weight, the predictor's then the corrector's, for the history's dt: set when the history
@@ -279,14 +268,68 @@ private:
         }
     };
 
-    // Out of line: the k-1 starting steps are rare, and their frame (the starter's stages) would otherwise
+    // The rare calls of step(), out of line, whole (a tail call, so that the common path keeps no frame for
+    // it): the k-1 starting steps, and the full check of the history's grid (detail::continuation: the same
+    // dt, t the last step's t + dt to within the rounding of a counter's t0 + i dt), then the step. A NaN or
+    // infinite t is on no grid: invalid_time, tested only where the grid check failed (it passes only finite
+    // times).
+    template <class System>
+    ODESTEP_NOINLINE status off_grid(System& f, State& y, T t, T dt) {
+        if (count_ < M) return starter_step(f, y, t, dt);
+        if (!continues(t, dt, y)) return detail::is_finite(t) ? status::step_mismatch : status::invalid_time;
+        return formula_step(f, y, t, dt);
+    }
+
+    // A step of the formula, once the grid is checked.
+    template <class System>
+    ODESTEP_INLINE status formula_step(System& f, State& y, T t, T dt) {
+        State fn;
+        detail::evaluate(f, t, y, fn);
+        // Unchecked, y_{n+1} is computed into y itself (component n of the formula reads y[n] alone).
+        State next;
+        State& out = detail::result_target<!checks_finiteness>(next, y);
+        if constexpr (pece) {
+            State predicted;
+            combine<predictor>(predicted, y, fn, fn);  // the second fn is not read: beta has no f_{n+1}
+            State fp;
+            detail::evaluate(f, t + dt, static_cast<const State&>(predicted), fp);
+            combine<corrector>(out, y, fp, fn);
+        } else {
+            combine<predictor>(out, y, fn, fn);
+        }
+        // f_n enters y_{n+1} with a non-zero weight (as does f(t_{n+1}, p) in PECE), and x * Inf or x * NaN is
+        // never finite, nor is a sum with a non-finite term: testing y_{n+1} tests the derivatives too.
+        if (!detail::all_finite_under<Check>(next)) return status::non_finite;
+        last_t_ = t;
+        record(fn);
+        if constexpr (checks_finiteness) detail::assign(y, next);
+        return status::ok;
+    }
+
+    // |t - (t_prev + dt)| <= 4 eps |t_prev| + slack_, slack_ = 4 eps (|dt| + |t_first|): half the full check's
+    // allowance (detail::continuation, 8 eps (|t_prev + dt| + |dt| + |t_first|)), measured from t_prev, which
+    // is finite, so that the bound is finite and an infinite or NaN t fails (as does t_prev + dt overflowing,
+    // Inf). A subset of what the full check accepts, inline, for the counter's times t0 + i dt, which are a
+    // few ULPs off t_prev + dt at a quarter of the steps.
+    ODESTEP_INLINE bool near_grid(T t, T dt) const noexcept {
+        constexpr T c = T(4) * std::numeric_limits<T>::epsilon();
+        return detail::abs_value(t - (last_t_ + dt)) <= c * detail::abs_value(last_t_) + slack_;
+    }
+
+    // The full grid check after a step: where the last step ended (last_t_ + dt, NaN when not finite).
+    bool continues(T t, T dt, const State& y) noexcept {
+        next_.expect(last_t_, next_.dt, y, true);
+        return next_.on_grid(t, dt);
+    }
+
+    // Out of line (and off_grid's call): the k-1 starting steps are rare, and their frame (the starter's stages) would otherwise
     // be every step's (x86-64 -Os, Lorenz AB4: 14 instructions a step for the registers saved and restored).
     template <class System>
     ODESTEP_NOINLINE status starter_step(System& f, State& y, T t, T dt) {
         // After the first step since reset(), the grid check of step(). A non-finite t starts no grid. (It
         // would also miss the recorder, NaN == NaN being false, and cost the evaluation below on top of the
         // starter's: one more than rhs_evals_per_step.)
-        if (count_ > 0 && !next_.on_grid(t, dt))
+        if (count_ > 0 && !continues(t, dt, y))
             return detail::is_finite(t) ? status::step_mismatch : status::invalid_time;
         if (!detail::is_finite(t)) return status::invalid_time;
         State next = y;
@@ -301,12 +344,17 @@ private:
         // stage input (the midpoint rule's b_1 = 0), where a non-finite value need not reach the new state.
         if (!detail::all_finite_under<Check>(fn)) return status::non_finite;
         next_.expect(t, dt, y, count_ > 0);  // the first step since reset() starts the grid (its t_start)
+        last_t_ = t;
         if (count_ == 0) {
             for (std::size_t j = 0; j < K; ++j) scaled_[j] = dt * predictor::weight(j);
             for (std::size_t j = 0; j < corrector::size; ++j) scaled_[K + j] = dt * corrector::weight(j);
         }
         record(fn);
-        ++count_;
+        if (++count_ == M) {  // the fast path's, from the next step on
+            grid_dt_ = next_.dt;
+            constexpr T c = T(4) * std::numeric_limits<T>::epsilon();
+            slack_ = c * detail::abs_value(dt) + c * detail::abs_value(next_.t_start);  // finite: see near_grid
+        }
         detail::assign(y, next);
         return status::ok;
     }
