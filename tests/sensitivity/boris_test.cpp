@@ -2,7 +2,8 @@
 // The Boris step's derivative (sensitivity/boris.hpp): det Phi = 1 and the velocity block a rotation in uniform
 // fields (the closed form of the step); Phi against central differences of the plain step in a non-uniform
 // field, O(eps^2) over a sweep of eps; the composition over several steps against the differences of the run;
-// NaN in a field Jacobian rolled back.
+// NaN in a field Jacobian rolled back. The relativistic pusher's the same way (at |u| = 1.66 c), with its
+// non-relativistic limit and |u| kept by the rotation in a magnetic field.
 #include <doctest/doctest.h>
 #include <odestep/odestep.hpp>
 
@@ -230,5 +231,176 @@ TEST_CASE("boris_transition: NaN in a field Jacobian is non_finite with x, v and
     CHECK(step.step(bad_field, field_jacobian{}, x, v, phi, 0.0, 0.1) == odestep::status::non_finite);
     CHECK(same_bits(x, x0));
     CHECK(same_bits(v, v0));
+    CHECK(max_difference(phi, before) == 0.0);
+}
+
+// ---- the relativistic pusher (boris_relativistic_transition)
+
+namespace {
+
+// Central differences of n plain relativistic Boris steps from (x, u), as run_difference.
+template <class F, class T>
+mat<T, 6> relativistic_run_difference(F f, T qm, T c, const vec<T>& x, const vec<T>& u, T dt, int n, T e) {
+    mat<T, 6> d{};
+    const odestep::boris_relativistic<vec<T>> pusher(qm, c);
+    for (std::size_t j = 0; j < 6; ++j) {
+        std::array<vec<T>, 2> px{x, u};
+        std::array<vec<T>, 2> mx{x, u};
+        px[j / 3][j % 3] += e;
+        mx[j / 3][j % 3] -= e;
+        for (int k = 0; k < n; ++k) {
+            const T t = T(k) * dt;
+            REQUIRE(pusher.step(f, px[0], px[1], t, dt) == odestep::status::ok);
+            REQUIRE(pusher.step(f, mx[0], mx[1], t, dt) == odestep::status::ok);
+        }
+        for (std::size_t i = 0; i < 6; ++i) d[i][j] = (px[i / 3][i % 3] - mx[i / 3][i % 3]) / (T(2) * e);
+    }
+    return d;
+}
+
+// u = gamma v at relativistic speed: |u| = 1.66 c with c = 1, gamma = 1.94, so both Lorentz factors and their
+// derivatives are far from the non-relativistic limit.
+const vec<double> u0{1.2, 0.8, -0.9};
+
+}  // namespace
+
+static_assert(odestep::boris_relativistic_transition<vec<double>>::order == 2);
+
+TEST_CASE("boris_relativistic_transition: Phi matches central differences of the step to O(eps^2), det Phi = 1") {
+    const double dt = 0.2;
+    const double qm = 1.3;
+    const double c = 1.0;
+    const odestep::boris_relativistic_transition<vec<double>> step(qm, c);
+    vec<double> x = x0;
+    vec<double> u = u0;
+    odestep::phase_matrix_t<vec<double>> phi{};
+    REQUIRE(step.step(field{}, field_jacobian{}, x, u, phi, 0.0, dt) == odestep::status::ok);
+    // The new state is the plain step's, bit for bit.
+    vec<double> px = x0;
+    vec<double> pu = u0;
+    REQUIRE(odestep::boris_relativistic<vec<double>>(qm, c).step(field{}, px, pu, 0.0, dt) == odestep::status::ok);
+    CHECK(same_bits(px, x));
+    CHECK(same_bits(pu, u));
+    // Volume preserving for fields of x (derived in the header: a shift, a rotation about B by an angle of
+    // |u-| alone, a shift, then a shear; Higuera & Cary 2017).
+    CHECK(std::fabs(determinant(phi) - 1.0) < 1e-14);
+    // The differences' error is e^2/6 times a third derivative plus round-off: each halving divides it by 3 to
+    // 5 while truncation dominates (a Phi without the Lorentz factors' derivatives levels out).
+    double e = 1e-2;
+    double previous = max_difference(relativistic_run_difference(field{}, qm, c, x0, u0, dt, 1, e), phi);
+    for (int halving = 0; halving < 3; ++halving) {
+        e /= 2;
+        const double error = max_difference(relativistic_run_difference(field{}, qm, c, x0, u0, dt, 1, e), phi);
+        INFO("e = " << e << ", error " << error << ", previous " << previous);
+        CHECK(previous / error > 3.0);
+        CHECK(previous / error < 5.0);
+        previous = error;
+    }
+}
+
+TEST_CASE("boris_relativistic_transition: in uniform fields the momentum block keeps |u| and dx/dx = I") {
+    // Uniform fields, E = 0: u_{n+1/2} is the rotation of u about B by an angle of |u| alone, so |u| is kept:
+    // d|u_{n+1/2}|^2 / du = 2 u_{n+1/2}^T (du_{n+1/2} / du) equals 2 u^T. x enters nothing but the drift.
+    struct magnetic {
+        void operator()(double, const vec<double>&, vec<double>&, vec<double>& B) const { B = {0.4, 0.7, -1.1}; }
+    };
+    const double dt = 0.3;
+    const odestep::boris_relativistic_transition<vec<double>> step(-1.7, 1.0);
+    vec<double> x = x0;
+    vec<double> u = u0;
+    odestep::phase_matrix_t<vec<double>> phi{};
+    REQUIRE(step.step(magnetic{}, uniform_jacobian{}, x, u, phi, 0.0, dt) == odestep::status::ok);
+    CHECK(std::fabs(determinant(phi) - 1.0) < 1e-14);
+    for (std::size_t j = 0; j < 3; ++j) {
+        double grad = 0.0;
+        for (std::size_t i = 0; i < 3; ++i) {
+            CHECK(phi[i][j] == (i == j ? 1.0 : 0.0));  // dx/dx = I
+            CHECK(phi[3 + i][j] == 0.0);               // du/dx = 0
+            grad += 2.0 * u[i] * phi[3 + i][3 + j];
+        }
+        CHECK(std::fabs(grad - 2.0 * u0[j]) < 1e-14);
+    }
+}
+
+TEST_CASE("boris_relativistic_transition: as c grows Phi becomes the non-relativistic boris_transition's") {
+    // gamma = sqrt(1 + |u|^2 / c^2) = 1 to the rounding of double for c = 1e100: the relativistic step and its
+    // derivative are then the non-relativistic ones (boris_transition, checked above against its closed form).
+    const double dt = 0.2;
+    const double qm = 1.3;
+    vec<double> x = x0;
+    vec<double> u = v0;
+    odestep::phase_matrix_t<vec<double>> phi{};
+    REQUIRE(odestep::boris_relativistic_transition<vec<double>>(qm, 1e100).step(field{}, field_jacobian{}, x, u, phi,
+                                                                                0.0, dt) == odestep::status::ok);
+    vec<double> y = x0;
+    vec<double> v = v0;
+    odestep::phase_matrix_t<vec<double>> phi_newton{};
+    REQUIRE(odestep::boris_transition<vec<double>>(qm).step(field{}, field_jacobian{}, y, v, phi_newton, 0.0, dt) ==
+            odestep::status::ok);
+    CHECK(same_bits(x, y));
+    CHECK(same_bits(u, v));
+    CHECK(max_difference(phi, phi_newton) < 1e-15);
+}
+
+TEST_CASE("boris_relativistic_transition: the product of 8 steps' Phi is propagate's and the run's differences") {
+    const double dt = 0.15;
+    const double qm = 0.9;
+    const double c = 1.5;
+    const odestep::boris_relativistic_transition<vec<double>> step(qm, c);
+    vec<double> x = x0;
+    vec<double> u = u0;
+    vec<double> y = x0;
+    vec<double> w = u0;
+    mat<double, 6> product_of_steps = identity<double, 6>();
+    odestep::sensitivity_matrix<double, 6, 6> s = identity<double, 6>();
+    for (int k = 0; k < 8; ++k) {
+        const double t = k * dt;
+        mat<double, 6> phi{};
+        REQUIRE(step.step(field{}, field_jacobian{}, x, u, phi, t, dt) == odestep::status::ok);
+        product_of_steps = product(phi, product_of_steps);
+        REQUIRE(step.propagate(field{}, field_jacobian{}, y, w, s, t, dt) == odestep::status::ok);
+    }
+    CHECK(same_bits(x, y));
+    CHECK(same_bits(u, w));
+    CHECK(max_difference(product_of_steps, s) < 1e-13);
+    CHECK(std::fabs(determinant(s) - 1.0) < 1e-13);
+    // Central differences of the 8-step run, e = 1e-5: error e^2 |third derivative| / 6 plus round-off.
+    CHECK(max_difference(relativistic_run_difference(field{}, qm, c, x0, u0, dt, 8, 1e-5), s) < 1e-8);
+}
+
+TEST_CASE("boris_relativistic_transition: float stays float and agrees with the double Phi") {
+    const odestep::boris_relativistic_transition<vec<float>> step(1.3f, 1.0f);
+    vec<float> x{0.4f, -0.3f, 0.8f};
+    vec<float> u{1.2f, 0.8f, -0.9f};
+    odestep::phase_matrix_t<vec<float>> phi{};
+    REQUIRE(step.step(field{}, field_jacobian{}, x, u, phi, 0.0f, 0.2f) == odestep::status::ok);
+    const odestep::boris_relativistic_transition<vec<double>> step_d(1.3, 1.0);
+    vec<double> xd{double(0.4f), double(-0.3f), double(0.8f)};
+    vec<double> ud{double(1.2f), double(0.8f), double(-0.9f)};
+    mat<double, 6> phid{};
+    REQUIRE(step_d.step(field{}, field_jacobian{}, xd, ud, phid, 0.0, double(0.2f)) == odestep::status::ok);
+    for (std::size_t i = 0; i < 6; ++i)
+        for (std::size_t j = 0; j < 6; ++j) CHECK(std::fabs(double(phi[i][j]) - phid[i][j]) < 1e-5);
+}
+
+TEST_CASE("boris_relativistic_transition: NaN in a field Jacobian is non_finite with x, u and Phi untouched") {
+    const odestep::boris_relativistic_transition<vec<double>> step(1.0, 2.0);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    auto bad_jacobian = [nan](double, const vec<double>&, mat<double, 3>& ex, mat<double, 3>&) { ex[2][0] = nan; };
+    vec<double> x = x0;
+    vec<double> u = u0;
+    mat<double, 6> phi = identity<double, 6>();
+    phi[2][5] = 7.0;
+    const mat<double, 6> before = phi;
+    CHECK(step.step(field{}, bad_jacobian, x, u, phi, 0.0, 0.1) == odestep::status::non_finite);
+    CHECK(same_bits(x, x0));
+    CHECK(same_bits(u, u0));
+    CHECK(max_difference(phi, before) == 0.0);
+    // A momentum whose |u|^2 overflows: the plain step's own failure, the same status.
+    vec<double> huge{1e200, 0.0, 0.0};
+    const vec<double> huge0 = huge;
+    CHECK(step.step(field{}, field_jacobian{}, x, huge, phi, 0.0, 0.1) == odestep::status::non_finite);
+    CHECK(same_bits(x, x0));
+    CHECK(same_bits(huge, huge0));
     CHECK(max_difference(phi, before) == 0.0);
 }

@@ -45,9 +45,21 @@ constexpr bool matrix_finite(const sensitivity_matrix<T, R, C>& m) noexcept {
     return true;
 }
 
-// to = a b (a: R x L, b: L x C). A zero a_il skips its row of b: a Jacobian's structural zeros (a
-// kinematic identity block, a banded coupling) cost one compare each instead of C multiply-adds. Both loops
-// over l and over the columns are unrolled unless -Os (fully to 16: a small product is straight-line code).
+// Whether a product skips the row of b that a zero a_il multiplies (a Jacobian's structural zeros: a
+// kinematic identity block, a banded coupling), for rows of C entries of T: always on a scalar FPU, where the
+// compare and branch cost less than the C multiply-adds they save; on a vector unit (SSE2, NEON) only for rows
+// wider than two 16-byte vectors, since a shorter row is one or two vector multiply-adds, less than the test
+// costs when J has few zeros (bench/RESULTS.md, "Steps with Phi").
+#if defined(__SSE2__) || defined(__ARM_NEON)
+template <class T, std::size_t C>
+inline constexpr bool skip_zero_rows = C * sizeof(T) > 32;
+#else
+template <class T, std::size_t C>
+inline constexpr bool skip_zero_rows = true;
+#endif
+
+// to = a b (a: R x L, b: L x C), zero a_il skipped where skip_zero_rows says. Both loops over l and over
+// the columns are unrolled unless -Os (fully to 16: a small product is straight-line code).
 template <class T, std::size_t R, std::size_t L, std::size_t C>
 constexpr void multiply(const sensitivity_matrix<T, R, L>& a, const sensitivity_matrix<T, L, C>& b,
                         sensitivity_matrix<T, R, C>& to) noexcept {
@@ -56,7 +68,7 @@ constexpr void multiply(const sensitivity_matrix<T, R, L>& a, const sensitivity_
         ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t l = 0; l < L; ++l) {
             const T ail = a[i][l];
-            if (ail == T(0)) continue;
+            if (skip_zero_rows<T, C> && ail == T(0)) continue;
             ODESTEP_UNROLL_UNLESS_SIZE
             for (std::size_t j = 0; j < C; ++j) row[j] += ail * b[l][j];
         }
@@ -74,7 +86,7 @@ constexpr void multiply_identity_plus(const sensitivity_matrix<T, R, R>& a, T c,
         ODESTEP_UNROLL_UNLESS_SIZE
         for (std::size_t l = 0; l < R; ++l) {
             const T ail = a[i][l];
-            if (ail == T(0)) continue;
+            if (skip_zero_rows<T, R> && ail == T(0)) continue;
             const T cl = c * ail;
             ODESTEP_UNROLL_UNLESS_SIZE
             for (std::size_t j = 0; j < R; ++j) row[j] += cl * b[l][j];
@@ -347,14 +359,18 @@ private:
         out = d;
         return status::ok;
     }
-    // d = S + dt sum_i b_i K_i (S = I when Identity): the stages with b_i = 0 are not read (nor evaluated).
+    // d = S + dt sum_i b_i K_i (S = I when Identity): the stages with b_i = 0 are not read (nor evaluated),
+    // S added last (the sum's order: S + (dt sum_i b_i K_i)). Unrolled (not -Os), row by row: the row kept
+    // in registers while each stage adds its row, a loop over the columns that the compiler vectorizes. At
+    // -Os, where nothing is unrolled, entry by entry: a rolled row would be loaded and stored once per
+    // stage, where each entry's sum stays in a register.
     template <std::size_t M, bool Identity, std::size_t... I>
     static void add_weighted(sensitivity_matrix<T, N, M>& d, const sensitivity_matrix<T, N, M>& seed,
                              const std::array<sensitivity_matrix<T, N, M>, plan::S>& k, T dt,
                              std::index_sequence<I...>) {
         const std::array<T, plan::S> w{(dt * plan::tab.b[I])...};
+#if defined(__OPTIMIZE_SIZE__)
         for (std::size_t r = 0; r < N; ++r) {
-            ODESTEP_UNROLL_UNLESS_SIZE
             for (std::size_t c = 0; c < M; ++c) {
                 T sum = T(0);
                 (((plan::tab.b[I] != T(0)) ? void(sum += w[I] * k[I][r][c]) : void()), ...);
@@ -365,6 +381,24 @@ private:
                 }
             }
         }
+#else
+        for (std::size_t r = 0; r < N; ++r) {
+            std::array<T, M> row{};
+            ODESTEP_UNROLL_UNLESS_SIZE
+            for (std::size_t i = 0; i < plan::S; ++i) {
+                if (plan::tab.b[i] == T(0)) continue;
+                ODESTEP_UNROLL_UNLESS_SIZE
+                for (std::size_t c = 0; c < M; ++c) row[c] += w[i] * k[i][r][c];
+            }
+            if constexpr (Identity) {
+                row[r] += T(1);
+            } else {
+                ODESTEP_UNROLL_UNLESS_SIZE
+                for (std::size_t c = 0; c < M; ++c) row[c] = seed[r][c] + row[c];
+            }
+            d[r] = row;
+        }
+#endif
     }
 };
 
