@@ -63,54 +63,22 @@ ODESTEP_INLINE void over_first(std::size_t n, Body&& body) {
         // above Max do the first Max): the jump needs no range test.
         constexpr std::size_t mask = Max <= 2 ? 1 : Max <= 4 ? 3 : Max <= 8 ? 7 : 15;
         switch ((n - 1) & mask) {
-            case 15:
-                at<15, Max>(body);
-                [[fallthrough]];
-            case 14:
-                at<14, Max>(body);
-                [[fallthrough]];
-            case 13:
-                at<13, Max>(body);
-                [[fallthrough]];
-            case 12:
-                at<12, Max>(body);
-                [[fallthrough]];
-            case 11:
-                at<11, Max>(body);
-                [[fallthrough]];
-            case 10:
-                at<10, Max>(body);
-                [[fallthrough]];
-            case 9:
-                at<9, Max>(body);
-                [[fallthrough]];
-            case 8:
-                at<8, Max>(body);
-                [[fallthrough]];
-            case 7:
-                at<7, Max>(body);
-                [[fallthrough]];
-            case 6:
-                at<6, Max>(body);
-                [[fallthrough]];
-            case 5:
-                at<5, Max>(body);
-                [[fallthrough]];
-            case 4:
-                at<4, Max>(body);
-                [[fallthrough]];
-            case 3:
-                at<3, Max>(body);
-                [[fallthrough]];
-            case 2:
-                at<2, Max>(body);
-                [[fallthrough]];
-            case 1:
-                at<1, Max>(body);
-                [[fallthrough]];
-            case 0:
-                at<0, Max>(body);
-                break;
+            case 15: at<15, Max>(body); [[fallthrough]];
+            case 14: at<14, Max>(body); [[fallthrough]];
+            case 13: at<13, Max>(body); [[fallthrough]];
+            case 12: at<12, Max>(body); [[fallthrough]];
+            case 11: at<11, Max>(body); [[fallthrough]];
+            case 10: at<10, Max>(body); [[fallthrough]];
+            case 9: at<9, Max>(body); [[fallthrough]];
+            case 8: at<8, Max>(body); [[fallthrough]];
+            case 7: at<7, Max>(body); [[fallthrough]];
+            case 6: at<6, Max>(body); [[fallthrough]];
+            case 5: at<5, Max>(body); [[fallthrough]];
+            case 4: at<4, Max>(body); [[fallthrough]];
+            case 3: at<3, Max>(body); [[fallthrough]];
+            case 2: at<2, Max>(body); [[fallthrough]];
+            case 1: at<1, Max>(body); [[fallthrough]];
+            case 0: at<0, Max>(body); break;
         }
     }
 }
@@ -162,7 +130,7 @@ struct any_n_rk {
     template <std::size_t Estimates>
     static constexpr std::array<bool, S> unweighted = unweighted_stages(Estimates > 0, Estimates);
     template <std::size_t Estimates>
-    static constexpr bool next_from_stage = b_row < S && evaluated<Estimates>[b_row];
+    static constexpr bool next_from_stage = b_row < S&& evaluated<Estimates>[b_row];
     // Optimizing for size, the estimating steps loop over n instead of jumping into a sequence unrolled
     // over Max: the sequences of DOP853's estimating steps took 11 KB of flash more (Cortex-M4F -Os).
     template <std::size_t Estimates>
@@ -232,8 +200,8 @@ private:
     using a_row = typename rows::template a_row<I>;
 
     template <std::size_t Estimates, class Fn, class Size, std::size_t... I>
-    ODESTEP_INLINE static void stages(Fn fn, void* ctx, Size n, const T* y, T t, T h, T t_end,
-                                      std::array<row, S>& k, row& next, std::index_sequence<I...>) {
+    ODESTEP_INLINE static void stages(Fn fn, void* ctx, Size n, const T* y, T t, T h, T t_end, std::array<row, S>& k,
+                                      row& next, std::index_sequence<I...>) {
         (stage<I, Estimates>(fn, ctx, n, y, t, h, t_end, k, next), ...);
     }
     // k_I = f(t + c_I h, y + h sum_{j<I} a_Ij k_j) (detail::explicit_stages, over n).
@@ -252,7 +220,9 @@ private:
             } else {
                 row input;
                 row& in = I == b_row ? next : input;  // the b row's input is y_{n+1}: kept as the new state
-                over_first<Max, rolled<Estimates>>(n, [&](auto i) ODESTEP_CAPI_INLINE_LAMBDA { in[i] = y[i] + sum_form::template sum<a_row<I>>(k, i, h); });
+                over_first<Max, rolled<Estimates>>(n, [&](auto i) ODESTEP_CAPI_INLINE_LAMBDA {
+                    in[i] = y[i] + sum_form::template sum<a_row<I>>(k, i, h);
+                });
                 fn(ti, in.data(), k[I].data(), ctx);
             }
         }
