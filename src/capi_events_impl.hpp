@@ -123,7 +123,7 @@ struct owning_adapter : stepper_defaults<state<T>> {
     alignas(stepper_t<T>) unsigned char storage[sizeof(stepper_t<T>::storage)] = {};
     status step(const c_rhs<T>& f, state<T>& y, T t, T dt) { return m->step(storage, f, y, t, dt, nullptr, nullptr); }
     void reset() noexcept { m->reset(storage); }
-    kept_object<T> memory() const noexcept { return keep_object(m, storage); }   ///< (see kept_object)
+    kept_object<T> memory() const noexcept { return keep_object(m, storage); }  ///< (see kept_object)
     void restore_memory(const kept_object<T>& k) noexcept { put_back_object(m, storage, k); }
 };
 
@@ -142,7 +142,7 @@ struct owning_newton_adapter : stepper_defaults<state<T>> {
         return m->step_newton(storage, a, x, v, nullptr, t, dt, false);
     }
     void reset() noexcept { m->reset(storage); }
-    kept_object<T> memory() const noexcept { return keep_object(m, storage); }   ///< (see kept_object)
+    kept_object<T> memory() const noexcept { return keep_object(m, storage); }  ///< (see kept_object)
     void restore_memory(const kept_object<T>& k) noexcept { put_back_object(m, storage, k); }
 };
 

@@ -32,6 +32,7 @@
 #include <new>
 #include <type_traits>
 
+#include "capi_rk.hpp"
 #include "odestep/events/engine.hpp"
 #include "odestep/integrate.hpp"
 #include "odestep/multistep/adams.hpp"
@@ -40,7 +41,6 @@
 #include "odestep/odestep.h"
 #include "odestep/rk/explicit_rk.hpp"
 #include "odestep/status.hpp"
-#include "capi_rk.hpp"
 
 namespace odestep::capi {
 
@@ -560,8 +560,9 @@ constexpr method_ops<T> make_ops(const char* name) noexcept {
             // The most of either step: Dormand-Prince's estimating step makes one more than its plain step.
             static_cast<unsigned>(S::rhs_evals_per_step > S::rhs_evals_per_error_step ? S::rhs_evals_per_step
                                                                                       : S::rhs_evals_per_error_step),
-            detail::has_step_memory<S>::value ? sizeof(S) : 0, &ops_of<S>::construct, &ops_of<S>::reset, &ops_of<S>::step, &ops_of<S>::step_newton,
-            sizes_of<T, Family>(std::make_index_sequence<exact_states>{}), padded_of<T, Family>()};
+            detail::has_step_memory<S>::value ? sizeof(S) : 0, &ops_of<S>::construct, &ops_of<S>::reset,
+            &ops_of<S>::step, &ops_of<S>::step_newton, sizes_of<T, Family>(std::make_index_sequence<exact_states>{}),
+            padded_of<T, Family>()};
 }
 
 // ---- the C functions, for one precision

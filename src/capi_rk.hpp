@@ -54,63 +54,31 @@ template <std::size_t I, std::size_t Max, class Body>
 ODESTEP_INLINE void at(Body& body) {
     if constexpr (I < Max) body(std::integral_constant<std::size_t, I>{});
 }
-template <std::size_t Max, class Body>
+template <std::size_t Max, bool Rolled = false, class Body>
 ODESTEP_INLINE void over_first(std::size_t n, Body&& body) {
-    if constexpr (Max > 16) {
+    if constexpr (Max > 16 || Rolled) {
         for (std::size_t i = 0; i < n; ++i) body(i);
     } else {
         // (n - 1) & mask is n - 1 (n - 1 < Max <= mask + 1), and every value of it has a case (those at or
         // above Max do the first Max): the jump needs no range test.
         constexpr std::size_t mask = Max <= 2 ? 1 : Max <= 4 ? 3 : Max <= 8 ? 7 : 15;
         switch ((n - 1) & mask) {
-            case 15:
-                at<15, Max>(body);
-                [[fallthrough]];
-            case 14:
-                at<14, Max>(body);
-                [[fallthrough]];
-            case 13:
-                at<13, Max>(body);
-                [[fallthrough]];
-            case 12:
-                at<12, Max>(body);
-                [[fallthrough]];
-            case 11:
-                at<11, Max>(body);
-                [[fallthrough]];
-            case 10:
-                at<10, Max>(body);
-                [[fallthrough]];
-            case 9:
-                at<9, Max>(body);
-                [[fallthrough]];
-            case 8:
-                at<8, Max>(body);
-                [[fallthrough]];
-            case 7:
-                at<7, Max>(body);
-                [[fallthrough]];
-            case 6:
-                at<6, Max>(body);
-                [[fallthrough]];
-            case 5:
-                at<5, Max>(body);
-                [[fallthrough]];
-            case 4:
-                at<4, Max>(body);
-                [[fallthrough]];
-            case 3:
-                at<3, Max>(body);
-                [[fallthrough]];
-            case 2:
-                at<2, Max>(body);
-                [[fallthrough]];
-            case 1:
-                at<1, Max>(body);
-                [[fallthrough]];
-            case 0:
-                at<0, Max>(body);
-                break;
+            case 15: at<15, Max>(body); [[fallthrough]];
+            case 14: at<14, Max>(body); [[fallthrough]];
+            case 13: at<13, Max>(body); [[fallthrough]];
+            case 12: at<12, Max>(body); [[fallthrough]];
+            case 11: at<11, Max>(body); [[fallthrough]];
+            case 10: at<10, Max>(body); [[fallthrough]];
+            case 9: at<9, Max>(body); [[fallthrough]];
+            case 8: at<8, Max>(body); [[fallthrough]];
+            case 7: at<7, Max>(body); [[fallthrough]];
+            case 6: at<6, Max>(body); [[fallthrough]];
+            case 5: at<5, Max>(body); [[fallthrough]];
+            case 4: at<4, Max>(body); [[fallthrough]];
+            case 3: at<3, Max>(body); [[fallthrough]];
+            case 2: at<2, Max>(body); [[fallthrough]];
+            case 1: at<1, Max>(body); [[fallthrough]];
+            case 0: at<0, Max>(body); break;
         }
     }
 }
@@ -162,7 +130,11 @@ struct any_n_rk {
     template <std::size_t Estimates>
     static constexpr std::array<bool, S> unweighted = unweighted_stages(Estimates > 0, Estimates);
     template <std::size_t Estimates>
-    static constexpr bool next_from_stage = b_row < S && evaluated<Estimates>[b_row];
+    static constexpr bool next_from_stage = b_row < S&& evaluated<Estimates>[b_row];
+    // Optimizing for size, the estimating steps loop over n instead of jumping into a sequence unrolled
+    // over Max: the sequences of DOP853's estimating steps took 11 KB of flash more (Cortex-M4F -Os).
+    template <std::size_t Estimates>
+    static constexpr bool rolled = Estimates > 0 && detail::optimizing_for_size;
 
     /// y[0 .. n-1] <- y(t + dt), and with Estimates 1 or 2, e1 (and e2) the estimates of the first (two)
     /// embedded weights; on non_finite nothing is written.
@@ -178,7 +150,7 @@ struct any_n_rk {
         [[maybe_unused]] row err0;
         [[maybe_unused]] row err1;
         T total = -T(0);  // x + (-0) is x, exactly
-        over_first<Max>(n, [&](auto i) ODESTEP_CAPI_INLINE_LAMBDA {
+        over_first<Max, rolled<Estimates>>(n, [&](auto i) ODESTEP_CAPI_INLINE_LAMBDA {
             const T yi = y[i];
             saved[i] = yi;
             T result;
@@ -205,14 +177,14 @@ struct any_n_rk {
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
-            over_first<Max>(n, [&](auto i) ODESTEP_CAPI_INLINE_LAMBDA { y[i] = saved[i]; });
+            over_first<Max, rolled<Estimates>>(n, [&](auto i) ODESTEP_CAPI_INLINE_LAMBDA { y[i] = saved[i]; });
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
 #endif
             return status::non_finite;
         }
         if constexpr (Estimates >= 1) {
-            over_first<Max>(n, [&](auto i) ODESTEP_CAPI_INLINE_LAMBDA {
+            over_first<Max, rolled<Estimates>>(n, [&](auto i) ODESTEP_CAPI_INLINE_LAMBDA {
                 e1[i] = err0[i];
                 if constexpr (Estimates >= 2) e2[i] = err1[i];
             });
@@ -228,8 +200,8 @@ private:
     using a_row = typename rows::template a_row<I>;
 
     template <std::size_t Estimates, class Fn, class Size, std::size_t... I>
-    ODESTEP_INLINE static void stages(Fn fn, void* ctx, Size n, const T* y, T t, T h, T t_end,
-                                      std::array<row, S>& k, row& next, std::index_sequence<I...>) {
+    ODESTEP_INLINE static void stages(Fn fn, void* ctx, Size n, const T* y, T t, T h, T t_end, std::array<row, S>& k,
+                                      row& next, std::index_sequence<I...>) {
         (stage<I, Estimates>(fn, ctx, n, y, t, h, t_end, k, next), ...);
     }
     // k_I = f(t + c_I h, y + h sum_{j<I} a_Ij k_j) (detail::explicit_stages, over n).
@@ -248,7 +220,9 @@ private:
             } else {
                 row input;
                 row& in = I == b_row ? next : input;  // the b row's input is y_{n+1}: kept as the new state
-                over_first<Max>(n, [&](auto i) ODESTEP_CAPI_INLINE_LAMBDA { in[i] = y[i] + sum_form::template sum<a_row<I>>(k, i, h); });
+                over_first<Max, rolled<Estimates>>(n, [&](auto i) ODESTEP_CAPI_INLINE_LAMBDA {
+                    in[i] = y[i] + sum_form::template sum<a_row<I>>(k, i, h);
+                });
                 fn(ti, in.data(), k[I].data(), ctx);
             }
         }

@@ -182,7 +182,7 @@ typedef struct odestep_stepper_d {
         double align_scalar;                                                                       ///< alignment only
         void* align_pointer;                                                                       ///< alignment only
         uint64_t align_integer;                                                                    ///< alignment only
-    } storage;                                                                                     ///< not to be touched
+    } storage;  ///< not to be touched
 } odestep_stepper_d;
 
 /// What a loop did, counted (the C++ odestep::counts, member for member; see docs/reference.md). A member is

@@ -650,8 +650,7 @@ static void test_event_roll_back_keeps_history(void) {
     e_failing = e_plain;
     e_plain.ctx = &f_plain;
     e_failing.ctx = &f_failing;
-    CHECK(odestep_event_loop_start_d(&plain, &odestep_ab4_d, &e_plain, 1, NULL, &sys, y_plain, 0.0, 0.1) ==
-          ODESTEP_OK);
+    CHECK(odestep_event_loop_start_d(&plain, &odestep_ab4_d, &e_plain, 1, NULL, &sys, y_plain, 0.0, 0.1) == ODESTEP_OK);
     CHECK(odestep_event_loop_start_d(&failing, &odestep_ab4_d, &e_failing, 1, NULL, &sys, y_failing, 0.0, 0.1) ==
           ODESTEP_OK);
     for (k = 0; k < 6; ++k) { /* past AB4's start: its history is full */

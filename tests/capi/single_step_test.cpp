@@ -230,8 +230,9 @@ void unweighted_stage_not_finite() {
 
 }  // namespace
 
-TEST_CASE("C API single steps: the step over n puts every component back when it fails, and tests the stages no "
-          "weight reaches") {
+TEST_CASE(
+    "C API single steps: the step over n puts every component back when it fails, and tests the stages no "
+    "weight reaches") {
     roll_back_every_component<1>();
     roll_back_every_component<3>();
     roll_back_every_component<capi::max_states>();
