@@ -83,8 +83,10 @@ if ! "$cxx" -fsanitize=fuzzer "$probe" -o "$dir/probe" > "$dir/probe.log" 2>&1; 
   summary 0 1
   exit 1
 fi
-flags=(-std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
-  -Wall -Wextra -Werror -I"$root/include")
+# Line tables only: a finding's stack trace keeps every frame's file and line, and the targets compile in about a
+# sixth less CPU time than with -g (fuzz_free_events.cpp: 35.5 s against 29.4 s, user + sys).
+flags=(-std=c++17 -gline-tables-only -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
+  -fno-omit-frame-pointer -Wall -Wextra -Werror -I"$root/include")
 # Every translation unit on its own (fuzz_c_api's nine, the library's sources in src/ and its target, would
 # otherwise compile one after the other), JOBS at a time, the longest first; then each target is linked.
 stale=()

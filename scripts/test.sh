@@ -7,8 +7,9 @@
 #                             (build and test presets host-quick, in build/host/, which the full run reuses)
 #   scripts/test.sh           everything, what CI runs: the above and Doxygen, MISRA C, the host preset's whole
 #                             set (each header on its own, compile-fail contracts, the package consumers); the
-#                             unit, C and fuzz-replay tests under g++ C++20, clang++ C++20, and clang++ C++17
-#                             (-fno-exceptions -fno-rtti) with ASan+UBSan; libFuzzer; the portable suite on
+#                             unit and C tests under g++ C++20, clang++ C++20 (with the fuzz replays), and
+#                             clang++ C++17 (-fno-exceptions -fno-rtti) with ASan+UBSan; libFuzzer (ASan+UBSan,
+#                             over the same corpus first); the portable suite on
 #                             emulated Cortex-M cores; the firmware audit; the instruction-count checks. After
 #                             format and SPDX, its stages run in two lanes side by side, each stage's output
 #                             printed whole when it ends.
@@ -108,8 +109,10 @@ stage() {  # stage NAME: one stage of the test command, by name
     misra-c) run misra-c scripts/misra_c.sh ;;
     # host: everything, the checks that a second compiler or standard would only repeat included (each header
     # on its own, the compile-fail contracts under g++ and clang++, the package consumers, the examples); the
-    # other presets: the unit, C and fuzz-replay tests (CMakePresets.json). host-sanitize is also the
-    # clang++ C++17 -fno-exceptions -fno-rtti build (the preset host-clang, which it makes redundant).
+    # other presets: the unit and C tests, and under clang++ C++20 the fuzz replays and the allocation counting
+    # (CMakePresets.json: the fuzz stage replays the corpus under ASan+UBSan; no header branches on the
+    # standard). host-sanitize is also the clang++ C++17 -fno-exceptions -fno-rtti build (the preset
+    # host-clang, which it makes redundant).
     host | host-cxx20 | host-clang | host-clang-cxx20 | host-sanitize) run "$1" host_preset "$1" ;;
     # libFuzzer targets for the loops, the steps and the event loops; any finding fails.
     fuzz) run fuzz scripts/fuzz.sh --quick ;;
@@ -146,10 +149,11 @@ case $tier in
     stage spdx
     # The rest in two lanes side by side, each building with all the cores: a lane's serial parts (CMake's
     # configure, the tail of a build or a ctest run, the QEMU runs, the fuzzers' longest unit, valgrind) leave
-    # a core to the other lane. The host compilers in one lane; the fuzz targets, the Cortex-M builds and runs
-    # and the audit in the other; about the same CPU time in each (docs/testing.md).
-    host_lane=(docs misra-c host host-cxx20 host-clang-cxx20 host-sanitize bench-quick perf-gate)
-    target_lane=(fuzz cortex-m cortex-m0 audit)
+    # a core to the other lane. The g++ and sanitizer presets in one lane; the fuzz targets, the Cortex-M
+    # builds and runs, the audit and clang++ C++20 in the other; about the same CPU time in each
+    # (docs/testing.md).
+    host_lane=(docs misra-c host host-cxx20 host-sanitize bench-quick perf-gate)
+    target_lane=(fuzz cortex-m cortex-m0 audit host-clang-cxx20)
     lane "${host_lane[@]}" &
     lane_host=$!
     lane "${target_lane[@]}" &

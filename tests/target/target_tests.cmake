@@ -3,8 +3,8 @@
 # CMAKE_CROSSCOMPILING (configure with a toolchain file from toolchains/, e.g. --preset cortex-m4f).
 #
 # Builds, per core (one build directory each):
-#   odestep_target_tests_1.elf, _2.elf  tests/main.cpp + ODESTEP_PORTABLE_TEST_SOURCES (each half): the
-#       library's portable suite
+#   odestep_target_tests_1.elf, _2.elf, _3.elf  tests/main.cpp + ODESTEP_PORTABLE_TEST_SOURCES (a third
+#       each): the library's portable suite
 #   odestep_target_smoke.elf  tests/main.cpp + tests/target/smoke_test.cpp: the harness on its own
 # and registers them with ctest (label `target`), which runs them through CMAKE_CROSSCOMPILING_EMULATOR
 # (QEMU, semihosting: the image's exit status is the test result). A core without an emulator (Cortex-M0+)
@@ -73,11 +73,15 @@ endfunction()
 
 odestep_add_target_test(odestep_target_smoke ${CMAKE_CURRENT_LIST_DIR}/smoke_test.cpp)
 
-# The portable suite in two images, each well inside the boards' 4 MB of flash (one image had grown to 3.86 MB
-# on the M4F), and run side by side by ctest -j.
+# The portable suite in three images, each well inside the boards' 4 MB of flash (two had grown to 3.4 MB each
+# on the M4F at -Og), run side by side by ctest -j.
+set(odestep_target_images 3)
 list(LENGTH ODESTEP_PORTABLE_TEST_SOURCES odestep_portable_count)
-math(EXPR odestep_portable_half "${odestep_portable_count} / 2")
-list(SUBLIST ODESTEP_PORTABLE_TEST_SOURCES 0 ${odestep_portable_half} odestep_portable_first)
-list(SUBLIST ODESTEP_PORTABLE_TEST_SOURCES ${odestep_portable_half} -1 odestep_portable_second)
-odestep_add_target_test(odestep_target_tests_1 ${odestep_portable_first})
-odestep_add_target_test(odestep_target_tests_2 ${odestep_portable_second})
+set(odestep_first 0)
+foreach(image RANGE 1 ${odestep_target_images})
+  math(EXPR odestep_end "${odestep_portable_count} * ${image} / ${odestep_target_images}")
+  math(EXPR odestep_length "${odestep_end} - ${odestep_first}")
+  list(SUBLIST ODESTEP_PORTABLE_TEST_SOURCES ${odestep_first} ${odestep_length} odestep_part)
+  odestep_add_target_test(odestep_target_tests_${image} ${odestep_part})
+  set(odestep_first ${odestep_end})
+endforeach()
