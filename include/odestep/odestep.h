@@ -59,9 +59,9 @@
 #endif
 
 /// Storage of a stepper, in scalars (float or double): the largest stepper object (Adams-Bashforth-Moulton
-/// 4: three past derivatives and where the next step must start) with room to spare. The library checks
+/// 4: three past derivatives, its starter, the last step's time and the history's step) with room to spare. The library checks
 /// at compile time that every stepper fits.
-#define ODESTEP_C_STEPPER_SCALARS ((4u * (size_t)ODESTEP_C_MAX_STATES) + 16u)
+#define ODESTEP_C_STEPPER_SCALARS ((4u * (size_t)ODESTEP_C_MAX_STATES) + 18u)
 
 #ifdef __cplusplus
 extern "C" {
