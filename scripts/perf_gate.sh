@@ -40,7 +40,7 @@ limits=(
   "vv float unchecked 1.02"
   "vv double checked 0.57"
   "vv double unchecked 1.02"
-  "c_api double step 1.91"
+  "c_api double step 1.42"
 )
 
 summary() { echo "perf_gate: $1 passed, $2 failed"; }

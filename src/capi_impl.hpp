@@ -2,17 +2,19 @@
 // odestep C API: the adapters from the C structs (include/odestep/odestep.h) to the C++ templates, written
 // once for float and double; capi_float.cpp and capi_double.cpp instantiate them under the C names.
 //
-// The state. A C caller's n is known at run time, a C++ state's size at compile time. Two forms:
+// The state. A C caller's n is known at run time, a C++ state's size at compile time. Three forms:
+//   - over n (the single steps of the explicit Runge-Kutta methods, any n): capi_rk.hpp, explicit_rk's step
+//     written over a run-time n on the caller's y; each component bit for bit the C++ step's.
 //   - exact (the single steps, n <= ODESTEP_C_EXACT_STATES): each method is compiled for every size
-//     1 .. ODESTEP_C_EXACT_STATES, and a step runs the stepper of std::array<T, n> on a copy of the
-//     caller's n values, with the user's f called directly: the C++ step's arithmetic, no padding.
-//   - padded (the loops, the event loop, and the single steps of a larger n): the stepper of
-//     std::array<T, ODESTEP_C_MAX_STATES>; each call copies the caller's n values into a state whose
-//     components n .. MAX-1 are zero, and the right-hand side's adapter zeroes dydt and hands the user's f
-//     the first n components to write. The padding therefore stays exactly zero through
+//     1 .. ODESTEP_C_EXACT_STATES: the explicit Runge-Kutta methods as the form over n with n a constant,
+//     the others the stepper of std::array<T, n> on a copy of the caller's n values, f called directly.
+//   - padded (the loops, the event loop, and the single steps of Adams and the Newtonian methods): the
+//     stepper of std::array<T, ODESTEP_C_MAX_STATES>; each call copies the caller's n values into a state
+//     whose components n .. MAX-1 are zero, and the right-hand side's adapter zeroes dydt and hands the
+//     user's f the first n components to write. The padding therefore stays exactly zero through
 //     every stage (0 + dt * sum of zeros), so the steppers' finiteness checks, which run over all MAX
 //     components, decide on the first n alone.
-// Either way the first n components are copied back on success only; on failure nothing is.
+// Every form writes the caller's values only on success (the form over n puts them back on failure).
 //
 // The stepper object (explicit_rk, splitting, adams) is constructed in the caller's storage
 // (odestep_stepper_*.storage) by placement new: no heap, and a method is a constant table of function
@@ -154,8 +156,8 @@ struct method_ops {
                           bool kept);
     /// The exact single steps of size n (sizes[n - 1]), n up to ODESTEP_C_EXACT_STATES.
     std::array<sized_ops<T>, exact_states> sizes;
-    /// The single steps on the padded object: for n above ODESTEP_C_EXACT_STATES, and after a loop (so that
-    /// its history goes on).
+    /// The single steps for n above ODESTEP_C_EXACT_STATES, and after a loop (so that its history goes on):
+    /// over n for the explicit Runge-Kutta methods, on the padded object for the others (padded_of).
     sized_ops<T> padded;
 };
 
