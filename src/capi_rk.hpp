@@ -96,39 +96,14 @@ struct any_n_rk {
     using sum_form = detail::factored_sum<T, row, S>;
     static constexpr std::size_t b_row = detail::b_row(tab);
 
-    // explicit_rk's choice of stages (needed_stages, unweighted_stages), for the same table.
-    static constexpr std::array<bool, S> needed_stages(bool with_error) noexcept {
-        std::array<bool, S> needed{};
-        for (std::size_t i = S; i-- > 0;) {
-            bool used = tab.b[i] != T(0);
-            for (std::size_t e = 0; with_error && e < E; ++e) used = used || tab.bhat[e][i] != T(0);
-            for (std::size_t j = i + 1; j < S; ++j) used = used || (needed[j] && tab.a[j][i] != T(0));
-            needed[i] = used;
-        }
-        return needed;
-    }
-    static constexpr std::array<bool, S> unweighted_stages(bool with_error, std::size_t estimates) noexcept {
-        const std::array<bool, S> evaluated = needed_stages(with_error);
-        std::array<bool, S> unweighted{};
-        for (std::size_t i = 0; i < S; ++i) {
-            bool reached = tab.b[i] != T(0);
-            for (std::size_t e = 0; e < estimates && e < E; ++e) reached = reached || tab.b[i] != tab.bhat[e][i];
-            unweighted[i] = evaluated[i] && !reached;
-        }
-        return unweighted;
-    }
-    static constexpr std::size_t count(const std::array<bool, S>& flags) noexcept {
-        std::size_t c = 0;
-        for (bool f : flags) c += f ? 1U : 0U;
-        return c;
-    }
-    static_assert(count(needed_stages(false)) == explicit_rk<Method, row>::rhs_evals_per_step,
+    using choice = detail::stage_choice<Method, T>;  // explicit_rk's choice of stages, for the same table
+    static_assert(choice::count(choice::needed_stages(false)) == explicit_rk<Method, row>::rhs_evals_per_step,
                   "the C API's step evaluates the stages explicit_rk evaluates");
 
     template <std::size_t Estimates>
-    static constexpr std::array<bool, S> evaluated = needed_stages(Estimates > 0);
+    static constexpr std::array<bool, S> evaluated = choice::needed_stages(Estimates > 0);
     template <std::size_t Estimates>
-    static constexpr std::array<bool, S> unweighted = unweighted_stages(Estimates > 0, Estimates);
+    static constexpr std::array<bool, S> unweighted = choice::unweighted_stages(Estimates > 0, Estimates);
     template <std::size_t Estimates>
     static constexpr bool next_from_stage = b_row < S&& evaluated<Estimates>[b_row];
     // Optimizing for size, the estimating steps loop over n instead of jumping into a sequence unrolled

@@ -20,6 +20,54 @@
 
 namespace odestep {
 
+namespace detail {
+
+/// Which stages a step of Method's table in T evaluates, and which of them it must test for finiteness itself:
+/// explicit_rk's choice, which the C API's step over n (src/capi_rk.hpp) makes the same way.
+template <class Method, class T>
+struct stage_choice {
+    static constexpr auto tab = Method::template table<T>;
+    static constexpr std::size_t S = std::remove_const_t<decltype(tab)>::stages;
+    static constexpr std::size_t E = std::remove_const_t<decltype(tab)>::embedded;
+
+    // Stage i is needed when its weight is non-zero or a needed later stage reads it. With the error
+    // estimate, a non-zero embedded weight also counts (b_i - bhat_i != 0 needs k_i).
+    static constexpr std::array<bool, S> needed_stages(bool with_error) noexcept {
+        std::array<bool, S> needed{};
+        for (std::size_t i = S; i-- > 0;) {
+            bool used = tab.b[i] != T(0);
+            for (std::size_t e = 0; with_error && e < E; ++e) used = used || tab.bhat[e][i] != T(0);
+            for (std::size_t j = i + 1; j < S; ++j) used = used || (needed[j] && tab.a[j][i] != T(0));
+            needed[i] = used;
+        }
+        return needed;
+    }
+
+    // The stages a step evaluates whose value reaches none of the results it tests for finiteness: a zero
+    // weight b_i (the midpoint rule's b_1, Dormand-Prince's b_2), and for the estimating steps a zero
+    // b_i - bhat_i in each estimate the step returns. Such a stage is read only through later stage inputs,
+    // where a NaN need not survive (an f that ignores its input: a forcing f(t), a switch, a saturation), so
+    // its value is added to the finiteness test itself. A stage with a non-zero weight needs nothing more:
+    // w NaN and w Inf are not finite, and neither is a sum with such a term.
+    static constexpr std::array<bool, S> unweighted_stages(bool with_error, std::size_t estimates) noexcept {
+        const std::array<bool, S> evaluated = needed_stages(with_error);
+        std::array<bool, S> unweighted{};
+        for (std::size_t i = 0; i < S; ++i) {
+            bool reached = tab.b[i] != T(0);
+            for (std::size_t e = 0; e < estimates && e < E; ++e) reached = reached || tab.b[i] != tab.bhat[e][i];
+            unweighted[i] = evaluated[i] && !reached;
+        }
+        return unweighted;
+    }
+    static constexpr std::size_t count(const std::array<bool, S>& flags) noexcept {
+        std::size_t n = 0;
+        for (bool f : flags) n += f ? 1U : 0U;
+        return n;
+    }
+};
+
+}  // namespace detail
+
 /// An explicit Runge-Kutta step for y' = f(t, y) from the table `Method::table<T>`.
 ///
 /// The stage loop is unrolled over the table at compile time: a zero a_ij, b_i or (b_i - bhat_i) emits no
@@ -54,53 +102,20 @@ private:
                   "odestep: explicit_rk needs an explicit table (a strictly lower triangular); an implicit table "
                   "is stepped by odestep::implicit_rk (odestep/rk/implicit_rk.hpp)");
 
-    // Stage i is needed when its weight is non-zero or a needed later stage reads it. With the error
-    // estimate, a non-zero embedded weight also counts (b_i - bhat_i != 0 needs k_i).
-    static constexpr std::array<bool, S> needed_stages(bool with_error) noexcept {
-        std::array<bool, S> needed{};
-        for (std::size_t i = S; i-- > 0;) {
-            bool used = tab.b[i] != T(0);
-            for (std::size_t e = 0; with_error && e < E; ++e) used = used || tab.bhat[e][i] != T(0);
-            for (std::size_t j = i + 1; j < S; ++j) used = used || (needed[j] && tab.a[j][i] != T(0));
-            needed[i] = used;
-        }
-        return needed;
-    }
-    static constexpr std::size_t count(const std::array<bool, S>& flags) noexcept {
-        std::size_t n = 0;
-        for (bool f : flags) n += f ? 1U : 0U;
-        return n;
-    }
-    static constexpr std::array<bool, S> plain_stages = needed_stages(false);
-    static constexpr std::array<bool, S> error_stages = needed_stages(true);
-
-    // The stages a step evaluates whose value reaches none of the results it tests for finiteness: a zero
-    // weight b_i (the midpoint rule's b_1, Dormand-Prince's b_2), and for the estimating steps a zero
-    // b_i - bhat_i in each estimate the step returns. Such a stage is read only through later stage inputs,
-    // where a NaN need not survive (an f that ignores its input: a forcing f(t), a switch, a saturation), so
-    // its value is added to the finiteness test itself. A stage with a non-zero weight needs nothing more:
-    // w NaN and w Inf are not finite, and neither is a sum with such a term.
-    static constexpr std::array<bool, S> unweighted_stages(bool with_error, std::size_t estimates) noexcept {
-        const std::array<bool, S> evaluated = needed_stages(with_error);
-        std::array<bool, S> unweighted{};
-        for (std::size_t i = 0; i < S; ++i) {
-            bool reached = tab.b[i] != T(0);
-            for (std::size_t e = 0; e < estimates && e < E; ++e) reached = reached || tab.b[i] != tab.bhat[e][i];
-            unweighted[i] = evaluated[i] && !reached;
-        }
-        return unweighted;
-    }
+    using choice = detail::stage_choice<Method, T>;
+    static constexpr std::array<bool, S> plain_stages = choice::needed_stages(false);
+    static constexpr std::array<bool, S> error_stages = choice::needed_stages(true);
 
 public:
     static constexpr int order = tab.order;   ///< the method's order, from the table
     static constexpr std::size_t stages = S;  ///< the table's stages
     /// Right-hand-side evaluations of `step(f, y, t, dt)`, the most it ever makes.
-    static constexpr std::size_t rhs_evals_per_step = count(plain_stages);
+    static constexpr std::size_t rhs_evals_per_step = choice::count(plain_stages);
     /// Every step evaluates all its stages (the finiteness test comes after them): the loops count a run's
     /// evaluations as steps x rhs_evals_per_step.
     static constexpr bool exact_rhs_evals = true;
     /// Right-hand-side evaluations of the step that also returns the error estimate (0 without one).
-    static constexpr std::size_t rhs_evals_per_error_step = E > 0 ? count(error_stages) : 0;
+    static constexpr std::size_t rhs_evals_per_error_step = E > 0 ? choice::count(error_stages) : 0;
     static constexpr bool error_estimate = E > 0;      ///< the table has an embedded method
     static constexpr std::size_t error_estimates = E;  ///< how many embedded methods the table has
     /// The order of the (first) embedded method, 0 without one.
@@ -142,7 +157,7 @@ private:
     // them, and the exact test of the slow path. Expanded at compile time: for a table whose weights are
     // all non-zero the set is empty and nothing is emitted.
     template <std::size_t Estimates>
-    static constexpr std::array<bool, S> unweighted = unweighted_stages(Estimates > 0, Estimates);
+    static constexpr std::array<bool, S> unweighted = choice::unweighted_stages(Estimates > 0, Estimates);
     template <std::size_t Estimates>
     ODESTEP_INLINE static void add_stage_components(T& total, const std::array<State, S>& k, std::size_t n) noexcept {
         add_stage_components<Estimates>(total, k, n, std::make_index_sequence<S>{});
