@@ -502,6 +502,7 @@ void run_ticks(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_counte
         const auto twin = loop;
         const T t_before = loop.time();
         const std::uint64_t n_before = loop.ticks();
+        const std::uint64_t reached_before = loop.reached();
         const T grid_end = t0 + static_cast<T>(n_before + 1) * dt;
         const unsigned actions_before = g.actions;
         f.mark();
@@ -537,10 +538,12 @@ void run_ticks(reader& in, Stepper& stepper, Set& set, script<T, 2>& f, g_counte
                                "an ok tick not on the grid time it reached, t0 + reached() dt");
             ODESTEP_FUZZ_CHECK(std::isfinite(r.t), "an ok tick whose time is not finite");
             for (const auto& s : y) ODESTEP_FUZZ_CHECK(finite(s), "an ok tick left a state that is not finite");
-        } else if (r.t == t_before && r.fired == 0 && g.actions == actions_before && set.limits.probes == 0 &&
-                   g.since <= E) {
-            // Nothing fired, no action ran, no probe, no location (g read only at the step's end): the tick
-            // stopped at its start, with the state before it. (A firing, a probe or a location that fired
+        } else if (r.t == t_before && loop.reached() == reached_before && r.fired == 0 && g.actions == actions_before &&
+                   set.limits.probes == 0 && g.since <= E) {
+            // Nothing fired, no action ran, no probe, no location (g read only at the step's end), no step
+            // completed (a tick completes an earlier one that ended early: with dt under the ULP of t, that step
+            // moves the state and reached() but not the time): the tick stopped at its start, with the state
+            // before it. (A firing, a probe or a location that fired
             // nothing, as after an impure g's glitch, can leave the state at t_s + s for an s that t_s + s does
             // not resolve, where dt is far below the ULP of t: then only finiteness is asked.) Such a failed
             // tick is one the loop never saw: it goes on as its copy from before the tick (the twin).
